@@ -786,15 +786,12 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
             title, drawn = longer
     # The size chosen lettered: its parts stand apart where no sheet holds a larger way.
     title, drawn = diagram_parts(analysis, axis, field)
-    stacked = diagrams_layout.stacked(drawn)
-    if sheet != "none" and not holds(sheet, form, *_size(stacked)):
+    usual = _apart(title, drawn)
+    if sheet != "none" and not holds(sheet, form, *_size(usual.layers)):
         lower = _field_saving_a_sheet(drawn_at, sheet, form, axis, field)
         if lower != field:
             field = lower
-            title, drawn = diagram_parts(analysis, axis, field)
-            stacked = diagrams_layout.stacked(drawn)
-    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
-    usual = Panel("diagrams", tuple(stacked), parts, title, to_scale=False)
+            usual = _apart(*diagram_parts(analysis, axis, field))
     if sheet == "none" or (axis, field) != (AXIS_MM, FIELD_MM) or not holds(sheet, form, *_size(usual.layers)):
         return usual
     # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
@@ -803,7 +800,7 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     larger = []
     for axis, field in _larger_diagram_sizes(intervals):
         title, drawn = drawn_at(axis, field)
-        way = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False,
+        way = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), usual.parts, title, to_scale=False,
                     lettered=_lettered_diagrams(analysis, axis, field))
         if holds(sheet, form, width(way), height(way)):
             larger.append(way)
@@ -819,17 +816,13 @@ def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[lis
     """``field`` (mm), or the largest field down to :data:`_FIELD_GIVEN_FOR_A_SHEET` of it at which the kinematic
     diagrams stand on fewer sheets of their own: on A3 the three stood one to a sheet, each a third full, where
     fields 4 mm lower put two on one sheet.  ``drawn_at(axis, field)`` draws them unlettered."""
-    from . import diagrams as diagrams_layout
-
     def sheets_taken(at: float) -> float:
         title, drawn = drawn_at(axis, at)
         # A lower field draws the chords' pole farther left (the pole distance follows the field): a part may
         # come out wider than the sheet.
         if not all(holds(sheet, form, *_size(part)) for part in drawn):
             return math.inf
-        parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
-        stacked = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
-        return len(pack([stacked], sheet, form))
+        return len(pack([_apart(title, drawn)], sheet, form))
 
     taken = sheets_taken(field)
     if taken == 1:
@@ -837,6 +830,14 @@ def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[lis
     lowest = max(_LEAST_FIELD_MM, math.ceil(_FIELD_GIVEN_FOR_A_SHEET * field))
     return next((float(lower) for lower in range(math.ceil(field) - 1, lowest - 1, -1) if sheets_taken(lower) < taken),
                 field)
+
+
+def _apart(title: str, drawn: Sequence[Sequence[Layer]]) -> Panel:
+    """The kinematic diagrams ``drawn`` stacked under ``title``, each a part that may stand apart."""
+    from . import diagrams as diagrams_layout
+
+    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
+    return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
 
 
 def _lettered_diagrams(analysis: Analysis, axis: float, field: float) -> Callable[[], tuple[Layer, ...]]:
