@@ -823,14 +823,20 @@ def test_the_kinematic_diagrams_fit_the_sheet_each_whole_or_shortened_by_whole_i
                                        strings(analysis.scene.locale))
         assert not all(holds(sheet, form, *(bounds(part)[2] - bounds(part)[0], bounds(part)[3] - bounds(part)[1]))
                        for part in longer)
+    elif sheet == "A3":
+        # The usual axis; the Russian words leave two usual diagrams a few millimetres too tall for one A3 with the
+        # title block under them: drawn lower, they stand on two sheets, not three.
+        assert axis == 240.0
+        assert len(kinematics_sheet([panel], sheet, "ru")) == 2
+        assert [layer.items for layer in panel.layers] != [layer.items for layer in usual]
     else:
         # A1 has room to spare: drawn larger, the usual diagrams its last way, for a sheet with little room left.
-        assert axis == 240.0 if sheet == "A3" else axis >= 240.0
+        assert axis >= 240.0
         assert [layer.items for layer in panel.ways[-1].layers] == [layer.items for layer in usual]
 
 
 def test_diagrams_too_big_for_a_sheet_whole_stand_apart_on_it(analyses):
-    """On A3 the three diagrams (319 mm stacked) exceed the 271 mm of the sheet: each stands whole on a sheet."""
+    """On A3 the three diagrams (some 300 mm stacked) exceed the 271 mm of the sheet: each stands whole on a sheet."""
     analysis = analyses["ratchet_crank_rocker"]
     sheets = kinematics_sheet([diagrams_panel(analysis, "A3")], "A3", "ru")
     placed = [name for sheet in sheets for name in sheet.panels]
