@@ -67,6 +67,7 @@ from .loads import (
     with_switches,
 )
 from .mechanism import Mechanism, build
+from .memo import OwnedMemo
 from .motion import Motion, solve
 from .positions import PositionSet, make_positions
 from .scene import Scene
@@ -373,11 +374,19 @@ def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
         raise ValueError(f"count must be an integer >= 2, not {count!r}")
     if isinstance(source, Scene):
         mechanism = build(source)
-        positions = make_positions(mechanism)
-        analysis = None
-    else:
-        analysis = source
-        mechanism, positions = analysis.mechanism, analysis.positions
+        return _model_over(mechanism, make_positions(mechanism), None, count, constant)
+    # `check` weighs an analysis's dynamics three times (what the run would refuse, the dynamics overflowing the
+    # sheets, the stall it warns of), each asking for the model afresh: made once while the analysis lives.
+    return _MODELS.get(source, (count, constant),
+                       lambda: _model_over(source.mechanism, source.positions, source, count, constant))
+
+
+_MODELS: OwnedMemo[EquivalentModel] = OwnedMemo()
+
+
+def _model_over(mechanism: Mechanism, positions: PositionSet, analysis: Analysis | None, count: int,
+                constant: str) -> EquivalentModel:
+    """The equivalent model over ``count`` steps of the driver, reduced from ``analysis``'s plans where given."""
     driver = mechanism.driver
     if driver.cyclic:
         sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * math.pi, count + 1)

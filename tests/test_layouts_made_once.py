@@ -40,3 +40,34 @@ def test_a_run_that_chooses_its_length_scale_lays_the_kinematic_diagrams_out_onc
     assert names == sorted(path.name for path in afresh.files) and any(name.startswith("sheet") for name in names)
     for name in names:
         assert (tmp_path / "shared" / name).read_bytes() == (tmp_path / "afresh" / name).read_bytes(), name
+
+
+def test_check_weighs_the_dynamics_on_one_equivalent_model(tmp_path, monkeypatch, capsys):
+    """check asks for the machine's dynamics three times (what the run would refuse, the dynamics drawing on the
+    sheets, the stall it warns of): the equivalent model is reduced once for the analysis, and is the one a fresh
+    reduction gives."""
+    from graphplan import dynamics
+    from graphplan.analysis import analyse
+    from graphplan.cli import main
+    from graphplan.starters import starter
+
+    made = []
+    original = dynamics._model_over
+
+    def counted(*arguments):
+        made.append(arguments[2])
+        return original(*arguments)
+
+    monkeypatch.setattr(dynamics, "_model_over", counted)
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(starter("shaper"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    assert "dynamics" in capsys.readouterr().out
+    assert len(made) == 1 and made[0] is not None
+    # Asked again for the same analysis, the same model; a new analysis of the scene reduces its own, equal to it.
+    analysis = analyse(graphplan.load(scene))
+    first = dynamics.equivalent_model_of(analysis)
+    assert dynamics.equivalent_model_of(analysis) is first and len(made) == 2
+    fresh = original(analysis.mechanism, analysis.positions, analysis, dynamics.DEFAULT_COUNT, "auto")
+    assert (fresh.inertia == first.inertia).all() and (fresh.resisting == first.resisting).all()
+    assert dynamics.equivalent_model_of(analysis, dynamics.DEFAULT_COUNT + 1) is not first and len(made) == 3
