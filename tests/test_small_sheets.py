@@ -653,3 +653,7 @@ def test_a_factored_term_is_broken_inside_its_brackets_only_where_it_fits_no_lin
     narrow = fitted(equation, whole - 5.0, CAPTION)
     assert " ".join(narrow) == equation and not any(piece.endswith(("+", "−")) for piece in narrow), narrow
     assert any(piece.count("(") != piece.count(")") for piece in narrow), narrow
+    # Words in brackets are no factored term: they still break after a comma inside.
+    prose = "Mb = −166.7 N·m (iterations: 7, settled to 1e-9 of the load)"
+    assert fitted(prose, text_width("Mb = −166.7 N·m (iterations: 7,", CAPTION) + 1.0, CAPTION) == [
+        "Mb = −166.7 N·m (iterations: 7,", "settled to 1e-9 of the load)"]

@@ -2,8 +2,8 @@
 
 First after a comma, semicolon or colon (not one that ends a name of a word or
 two, which would end a line on it), before the sign of a term, before a
-bracket, none of them inside brackets; a piece still too wide is then broken
-between words, into pieces as even as can be, never inside
+bracket, none of them inside a factored term's brackets; a piece still too
+wide is then broken between words, into pieces as even as can be, never inside
 ``name = value unit`` nor after the sign of a term.  Widths are the generous estimate of
 :func:`~graphplan.render.primitives.text_width`.
 """
@@ -38,17 +38,21 @@ def fitted(line: str, width: float, size: float, weight: str = "normal") -> list
         return text_width(text, size, weight)
 
     phrase_cuts = [cut for cut in PHRASE_BREAK.finditer(line)
-                   if not NAME_BEFORE.search(line, 0, cut.start()) and not _in_brackets(line, cut.start())]
+                   if not NAME_BEFORE.search(line, 0, cut.start()) and not _in_factored_term(line, cut.start())]
     pieces = _broken(line, phrase_cuts, width, span)
     return [word_piece for piece in pieces
             for word_piece in (_evened(piece, WORD_BREAK, width, span) if span(piece) > width else [piece])]
 
 
-def _in_brackets(line: str, at: int) -> bool:
-    """Whether ``at`` stands inside brackets in ``line``: a break there (``− (Mu3″`` ending a line of ΣMp, its
-    ``− Mf23″ + Mf43″)·h4`` on the next) parts a factored term, which a reader takes in as one."""
-    before = line[:at]
-    return before.count("(") + before.count("（") > before.count(")") + before.count("）")
+def _in_factored_term(line: str, at: int) -> bool:
+    """Whether ``at`` stands inside the brackets of a term with a factor taken out, ``(Mu3″ − Mf23″ + Mf43″)·h4``: a
+    break there (``− (Mu3″`` ending a line of ΣMp, the rest on the next) parts a term a reader takes in as one.
+    Words in brackets break after their commas as anywhere else."""
+    opened = line.rfind("(", 0, at)
+    if opened < 0 or line.find(")", opened, at) >= 0:
+        return False
+    closed = line.find(")", at)
+    return closed >= 0 and line.startswith("·", closed + 1)
 
 
 def _evened(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
