@@ -13,10 +13,9 @@ import re
 
 from graphplan.analysis import analyse
 from graphplan.kinematic_diagrams import AXIS_MM, FIELD_MM
-from graphplan.render import diagrams as diagrams_layout
-from graphplan.render.packing import Panel, pack
+from graphplan.render.packing import pack
 from graphplan.render.primitives import Text
-from graphplan.render.sheet import diagram_parts, diagrams_panel
+from graphplan.render.sheet import _apart, diagram_parts, diagrams_panel
 from graphplan.render.title_block import form_of
 from graphplan.scene import loads
 from graphplan.starters import starter
@@ -30,9 +29,7 @@ def crank_rocker_in_russian():
 def sheets_taken(analysis, field: float, sheet: str = "A3") -> int:
     """The sheets the diagrams drawn at ``field`` take on their own, as the packing lays them out."""
     title, drawn = diagram_parts(analysis, AXIS_MM, field, lettered=False)
-    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
-    stacked = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
-    return len(pack([stacked], sheet, form_of(analysis.scene.locale)))
+    return len(pack([_apart("diagrams", title, drawn)], sheet, form_of(analysis.scene.locale)))
 
 
 def test_the_diagrams_take_one_sheet_fewer_at_the_highest_field_that_saves_it():

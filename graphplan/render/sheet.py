@@ -786,12 +786,12 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
             title, drawn = longer
     # The size chosen lettered: its parts stand apart where no sheet holds a larger way.
     title, drawn = diagram_parts(analysis, axis, field)
-    usual = _apart(title, drawn)
+    usual = _apart("diagrams", title, drawn)
     if sheet != "none" and not holds(sheet, form, *_size(usual.layers)):
         lower = _field_saving_a_sheet(drawn_at, sheet, form, axis, field)
         if lower != field:
             field = lower
-            usual = _apart(*diagram_parts(analysis, axis, field))
+            usual = _apart("diagrams", *diagram_parts(analysis, axis, field))
     if sheet == "none" or (axis, field) != (AXIS_MM, FIELD_MM) or not holds(sheet, form, *_size(usual.layers)):
         return usual
     # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
@@ -814,15 +814,15 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
 def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[list[Layer]]]], sheet: str, form: str,
                          axis: float, field: float) -> float:
     """``field`` (mm), or the largest field down to :data:`_FIELD_GIVEN_FOR_A_SHEET` of it at which the kinematic
-    diagrams stand on fewer sheets of their own: on A3 the three stood one to a sheet, each a third full, where
-    fields 4 mm lower put two on one sheet.  ``drawn_at(axis, field)`` draws them unlettered."""
+    diagrams stand on fewer sheets of their own: on A3 the Russian crank-rocker's three stood one to a sheet, each a
+    third full, where fields 3 mm lower put two on one sheet.  ``drawn_at(axis, field)`` draws them unlettered."""
     def sheets_taken(at: float) -> float:
         title, drawn = drawn_at(axis, at)
         # A lower field draws the chords' pole farther left (the pole distance follows the field): a part may
         # come out wider than the sheet.
         if not all(holds(sheet, form, *_size(part)) for part in drawn):
             return math.inf
-        return len(pack([_apart(title, drawn)], sheet, form))
+        return len(pack([_apart("diagrams", title, drawn)], sheet, form))
 
     taken = sheets_taken(field)
     if taken == 1:
@@ -832,12 +832,14 @@ def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[lis
                 field)
 
 
-def _apart(title: str, drawn: Sequence[Sequence[Layer]]) -> Panel:
-    """The kinematic diagrams ``drawn`` stacked under ``title``, each a part that may stand apart."""
-    from . import diagrams as diagrams_layout
+def _apart(name: str, label: str, drawn: Sequence[Sequence[Layer]], drawn_alone: bool = False) -> Panel:
+    """Diagrams ``drawn`` one under another as the panel ``name`` (``label`` says what it is), each a part that may
+    stand apart where there are several: the kinematic diagrams, the load diagrams."""
+    from .diagrams import stacked
 
-    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
-    return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+    parts = tuple(Panel(f"{name}-{k + 1}", tuple(part), to_scale=False)
+                  for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
+    return Panel(name, tuple(stacked(drawn)), parts, label, to_scale=False, drawn_alone=drawn_alone)
 
 
 def _lettered_diagrams(analysis: Analysis, axis: float, field: float) -> Callable[[], tuple[Layer, ...]]:
@@ -1117,7 +1119,6 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
     usual fields, at the first of the smaller ones that it holds (the scales stated follow); at ``field`` where
     that is given."""
     from . import load_diagrams as load_layout
-    from .diagrams import stacked
 
     text = strings(locale)
     form = form_of(locale)
@@ -1130,11 +1131,8 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
             if sheet is None or sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
                 break
             drawn, usual = load_layout.parts(diagrams, text, smaller), False
-    parts = tuple(Panel(f"load-diagrams-{k + 1}", tuple(part), to_scale=False)
-                  for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
     # At the usual fields, the drawing load_diagrams.svg is (:func:`graphplan.render.load_diagrams.layout`).
-    return Panel("load-diagrams", tuple(stacked(drawn)), parts, label=text["ld_title"], to_scale=False,
-                 drawn_alone=usual)
+    return _apart("load-diagrams", text["ld_title"], drawn, drawn_alone=usual)
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
