@@ -13,6 +13,7 @@ left to the caption, which tells the side by the one it starts from
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
@@ -407,13 +408,16 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
     # sliver (the crank-rocker starter's R23 at position 5 beyond R23n and R43, as at b76b78f), sooner than beside any
     # other arrow (beyond R14, by R14τ and just above R14's own name, it read as naming R14).
     own = {anchor.text, f"{anchor.text}n", f"{anchor.text}τ"}
-    for longest, fits in ((SLIVER_LEADER_MM, lambda text, leader: _reads_as_own(anchor, text, [], shaft_of)),
-                          (WHOLE_LEADER_MM, lambda text, leader: nearest_box(text) in own
-                           and _reads_as_own(anchor, text, [leader], shaft_of)),
-                          (WHOLE_LEADER_MM, lambda text, leader: _side_by_side_with(anchor, shaft_of[nearest_box(text)])
-                           and _reads_as_own(anchor, text, [leader], shaft_of)),
-                          (WHOLE_LEADER_MM, lambda text, leader: _reads_as_own(anchor, text, [leader], shaft_of))):
-        spot = next((spot for spot in _sliver_spots(anchor, drawn, texts, leaders, longest) if fits(*spot)), None)
+    # The three choices on a whole leader go through the same spots: worked out once, as the first asks for them.
+    whole_leader_spots = itertools.tee(_sliver_spots(anchor, drawn, texts, leaders, WHOLE_LEADER_MM), 3)
+    for spots, fits in ((_sliver_spots(anchor, drawn, texts, leaders, SLIVER_LEADER_MM),
+                         lambda text, leader: _reads_as_own(anchor, text, [], shaft_of)),
+                        (whole_leader_spots[0], lambda text, leader: nearest_box(text) in own
+                         and _reads_as_own(anchor, text, [leader], shaft_of)),
+                        (whole_leader_spots[1], lambda text, leader: _side_by_side_with(anchor, shaft_of[nearest_box(text)])
+                         and _reads_as_own(anchor, text, [leader], shaft_of)),
+                        (whole_leader_spots[2], lambda text, leader: _reads_as_own(anchor, text, [leader], shaft_of))):
+        spot = next((spot for spot in spots if fits(*spot)), None)
         if spot is not None:
             return spot
     return None
