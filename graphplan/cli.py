@@ -26,6 +26,7 @@ from .errors import GraphplanError, SceneError
 
 if TYPE_CHECKING:
     from .analysis import Analysis
+    from .machine_dynamics import MachineDynamics
     from .scene import Scene
 
 # The same for every command, so that a script can tell a refusal from an interruption.
@@ -334,11 +335,11 @@ def _check(given: str) -> int:
     if not scene.has_linkage:
         tables = [name for name in ("dynamics", "balancing", "vibration") if getattr(scene, name) is not None]
         pieces = _pieces(scene, None)
-        refuse_as_run_would(scene, None, chosen(scene, None))
+        dynamics = refuse_as_run_would(scene, None, chosen(scene, None))
         print(f"{shown}: ok")
         print(f"no mechanism; {', '.join(tables)}")
         print(pieces)
-        _print_outcomes(scene, None)
+        _print_outcomes(scene, None, dynamics)
         return 0
     # The whole analysis, not only the structure: a position the mechanism cannot reach, or a reading of
     # [measured] that names no segment of its plan, is refused here as the run would refuse it.
@@ -347,7 +348,7 @@ def _check(given: str) -> int:
     n, p5, w = mechanism.degrees_of_freedom
     try:
         pieces = _pieces(scene, analysis)  # an [output] include the scene cannot give is refused before "ok"
-        refuse_as_run_would(scene, analysis, chosen(scene, analysis))
+        dynamics = refuse_as_run_would(scene, analysis, chosen(scene, analysis))
     except GraphplanError as error:
         note_warnings(error, analysis)  # as the run, whose refusal this is, tells them
         raise
@@ -363,7 +364,7 @@ def _check(given: str) -> int:
         print(f"strokes: none: {_turning_round(analysis)}")
     print(pieces)
     _print_warnings(analysis)
-    _print_outcomes(scene, analysis)
+    _print_outcomes(scene, analysis, dynamics)
     return 0
 
 
@@ -379,14 +380,16 @@ def _turning_round(analysis: Analysis) -> str:
             "so it has no extreme positions and no K")
 
 
-def _print_outcomes(scene: Scene, analysis: Analysis | None) -> None:
+def _print_outcomes(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics | None) -> None:
     """The warnings ``run`` gives of its outcomes (a machine that stalls, a speed near resonance), which
-    ``check`` gave none of: the dynamics integrated as the run integrates them."""
+    ``check`` gave none of: the dynamics integrated as the run integrates them (``dynamics``, where the checks
+    before worked them out)."""
     from .deliverables import chosen, outcome_warnings, scale_warnings
     from .machine_dynamics import MachineDynamics
 
     pieces = chosen(scene, analysis)
-    dynamics = MachineDynamics(analysis if analysis is not None else scene) if "dynamics" in pieces else None
+    if dynamics is None and "dynamics" in pieces:
+        dynamics = MachineDynamics(analysis if analysis is not None else scene)
     for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
         print(f"warning: {told}")
 

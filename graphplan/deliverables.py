@@ -135,10 +135,14 @@ def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None =
     return tuple(piece for piece in PIECES if piece in asked)
 
 
-def refuse_as_run_would(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> None:
+def refuse_as_run_would(scene: Scene, analysis: Analysis | None,
+                        pieces: tuple[str, ...]) -> MachineDynamics | None:
     """Raise the :class:`SceneError` a run of ``pieces`` would meet only once it draws or integrates: a plan or
     polygon larger than any paper, a drawing no sheet holds at the scale the scene gives, a motor that outpulls
-    the resistance at every speed.  For ``check``, so that its "ok" means the run goes through."""
+    the resistance at every speed.  For ``check``, so that its "ok" means the run goes through.
+
+    Returns the machine's dynamics where it worked them out, for the warnings of their outcomes to read: worked out
+    again, the machine's motion was integrated once more for each (three times over in all)."""
     drawn = {"positions", "velocity", "acceleration", "forces", "lever", "sheets"} & set(pieces)
     if analysis is not None and drawn:
         from .render import drawings as draw
@@ -157,20 +161,23 @@ def refuse_as_run_would(scene: Scene, analysis: Analysis | None, pieces: tuple[s
         from .kinematic_diagrams import of_analysis
 
         of_analysis(analysis)  # a derivative out of the pole method's reach near a toggle
+    dynamics = None
     if "dynamics" in pieces and scene.dynamics is not None:
-        _dynamics_of(scene, analysis, None).refuse()
+        dynamics = _dynamics_of(scene, analysis, None)
+        dynamics.refuse()
     if "sheets" in pieces and scene.drawing.sheet != "none" and missing(scene, analysis, "dynamics") is None:
-        _refuse_dynamics_overflow(scene, analysis)
+        dynamics = _dynamics_of(scene, analysis, dynamics)
+        _refuse_dynamics_overflow(scene, analysis, dynamics)
+    return dynamics
 
 
-def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None) -> None:
+def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics) -> None:
     """The refusal the sheets meet where no sheet holds the dynamics drawing, even part by part: its scales are the
     program's, fitted to the machine, so only packing it shows whether it fits."""
     from .render.packing import pack
     from .render.sheet import dynamics_panel
     from .render.title_block import form_of
 
-    dynamics = _dynamics_of(scene, analysis, None)
     machine, _ = _machine_layouts(dynamics, _dynamics_words(scene, analysis, dynamics))
     pack([dynamics_panel(machine, scene.locale)], scene.drawing.sheet, form_of(scene.locale))
 

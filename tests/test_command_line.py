@@ -272,6 +272,27 @@ def test_check_refuses_a_motor_that_would_speed_the_machine_up_without_end(tmp_p
     assert without_progress(capsys.readouterr().err) == checked.err
 
 
+def test_check_works_the_machine_s_dynamics_out_once(tmp_path, capsys, monkeypatch):
+    """check worked the dynamics out for its refusals and again for the warnings of their outcomes, integrating
+    the machine's motion each time: the second is the first one's."""
+    from graphplan import machine_dynamics
+    from graphplan.starters import starter
+
+    made = []
+    original = machine_dynamics.MachineDynamics.__init__
+
+    def counted(self, source):
+        made.append(source)
+        original(self, source)
+
+    monkeypatch.setattr(machine_dynamics.MachineDynamics, "__init__", counted)
+    scene = tmp_path / "flywheel.toml"
+    scene.write_text(starter("flywheel"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    assert "dynamics" in capsys.readouterr().out
+    assert len(made) == 1
+
+
 def test_a_run_into_a_folder_keeps_what_no_run_wrote_there_and_replaces_its_own(tmp_path):
     """--out pointed at the scene's own folder deleted the scene and a draft beside it: a run replaces the
     files runs wrote there (listed in the folder) and carries everything else over."""
