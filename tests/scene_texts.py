@@ -375,3 +375,14 @@ def journal_friction(radii: dict[str, float], f: float = 0.1) -> str:
     that order, to add to a scene: the friction circles a course project gives a linkage's pairs."""
     return "".join(f'\n[[friction]]\njoint = "{joint}"\nf = {f}\nradius = {radius}\n'
                    for joint, radius in radii.items())
+
+
+def crank_rocker_working_its_quicker_stroke(locale: str = "en") -> str:
+    """The crank-rocker starter with its working stroke the quicker one (K < 1), as the starter first had it: the
+    force sheets and polygons that tests of particular layouts were written for (its sliver at position 5, its lever
+    a step smaller on A3, its weightless crank's polygon on one line at the coarsest μF)."""
+    from graphplan.starters import starter
+
+    text = starter("crank-rocker", locale)
+    working = next(line for line in text.splitlines() if line.startswith("working "))
+    return text.replace(working, 'working     = { link = 4, sense = "ccw" }')

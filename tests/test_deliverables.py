@@ -14,6 +14,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from scene_texts import crank_rocker_working_its_quicker_stroke
 from test_scene_errors import to_toml
 
 import graphplan
@@ -646,7 +647,7 @@ def test_a_drawing_the_sheets_alter_to_fit_is_written_on_its_own_as_without_the_
     """On A3 the crank-rocker's sheets draw its lever a standard step smaller than the velocity plan and its load
     diagrams at smaller fields: forces_2.svg and load_diagrams.svg, and the note that works the lever at the μV
     forces_2.svg draws it at, stay as a run without the sheets writes them."""
-    document = tomllib.loads(starter("crank-rocker"))
+    document = tomllib.loads(crank_rocker_working_its_quicker_stroke())
     document["positions"]["plans"] = [2]  # one force sheet is enough, and keeps the runs to a few seconds
     scene = tmp_path / "crank_rocker.toml"
     scene.write_text(to_toml(document), encoding="utf-8")

@@ -9,6 +9,7 @@ import functools
 import re
 
 import pytest
+from scene_texts import crank_rocker_working_its_quicker_stroke
 
 import graphplan
 from graphplan.analysis import analyse
@@ -78,7 +79,7 @@ def test_errors_md_says_in_words_what_a_file_or_key_it_names_is(shaper):
 
 @pytest.mark.parametrize("locale", LOCALES)
 def test_a_quicker_working_stroke_is_told_without_the_scene_s_key(locale):
-    analysis = analyse(graphplan.scene.loads(starter("crank-rocker", locale)))
+    analysis = analyse(graphplan.scene.loads(crank_rocker_working_its_quicker_stroke(locale)))
     note = note_markdown(analysis)
     assert "K = " in note and "K < 1" in note
     assert FILE_OR_KEY.findall(_sentences(note)) == []
