@@ -154,11 +154,12 @@ def without_force_word(text: str, locale: str) -> str:
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
 def test_a_cranks_reduced_load_is_a_moment_in_the_table_and_its_paragraph(tmp_path, locale):
-    """The ratchet (a crank, its driving moment taken constant): the table's load column is Mr, a moment read off
+    """The ratchet (a crank, its driving moment taken constant): the table's load column is −Mr, a moment read off
     the plans, and its title and paragraph say a moment, not a force or a load of no kind."""
     text = in_locale(RATCHET.read_text(encoding="utf-8"), locale) + "\n[dynamics]\ndelta = 0.05\n"
     note = run_note(tmp_path, text)
-    symbol = {"en": "Mr", "ru": "Mс", "zh": "Mr"}[locale]
+    # The loads' moment signed as their power: the resisting moment Mr with its sign turned.
+    symbol = {"en": "−Mr", "ru": "−Mс", "zh": "−Mr"}[locale]
     paragraph = plans_paragraph(note, symbol)
     assert MOMENT[locale] in paragraph
     assert FORCE[locale] not in without_force_word(paragraph, locale)
@@ -171,10 +172,10 @@ def test_a_cranks_reduced_load_is_a_moment_in_the_table_and_its_paragraph(tmp_pa
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
 def test_a_sliders_reduced_load_is_a_force(tmp_path, locale):
-    """The lever driven by a cylinder (a slider driver): its reduced load is a force, Fr, and its paragraph says so."""
+    """The lever driven by a cylinder (a slider driver): its reduced load is a force, −Fr, and its paragraph says so."""
     text = in_locale(SLIDER.read_text(encoding="utf-8"), locale) + "\n[dynamics]\n"
     note = run_note(tmp_path, text)
-    symbol = {"en": "Fr", "ru": "Fс", "zh": "Fr"}[locale]
+    symbol = {"en": "−Fr", "ru": "−Fс", "zh": "−Fr"}[locale]
     paragraph = plans_paragraph(note, symbol)
     assert FORCE[locale] in paragraph and MOMENT[locale] not in paragraph
     assert not any(word in paragraph for word in NEITHER[locale])

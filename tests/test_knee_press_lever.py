@@ -136,7 +136,10 @@ MB_CONVENTION = {"en": "(Mb counter-clockwise positive)",
 MR_CONVENTION = {"en": "positive where they drive, negative where they resist",
                  "ru": "положителен там, где силы движущие, и отрицателен там, где они сопротивляются",
                  "zh": "载荷起驱动作用处为正，起阻力作用处为负"}
-MR_SYMBOL = {"en": "Mr", "ru": "Mс", "zh": "Mr"}
+# The column is the loads' moment signed as their power: Mr, the resisting moment of the equation of motion
+# (Md − Mr, positive where the loads resist), with its sign turned.
+MR_SYMBOL = {"en": "−Mr", "ru": "−Mс", "zh": "−Mr"}
+MR_RESISTING = {"en": "Mr itself", "ru": "Сам момент сопротивления Mс", "zh": "等效阻力矩 Mr 本身"}
 
 
 def _number(text: str) -> float:
@@ -196,6 +199,7 @@ def test_the_press_note_gives_mb_and_mr_each_with_its_sign_convention(tmp_path, 
         assert math.isclose(mr, loads / abs(omega), rel_tol=1e-4) and mr < 0
     paragraph = "\n".join(lines[header:]).split("\n\n")[1]
     assert paragraph.startswith(MR_SYMBOL[locale]) and MR_CONVENTION[locale] in paragraph
+    assert MR_RESISTING[locale] in paragraph  # and says which way Mr itself is positive
     # And the table of Mb at every position says it too.
     assert any(line.startswith(("Table", "Таблица", "表")) and MB_CONVENTION[locale].strip("()（）") in line
                for line in lines)
