@@ -250,3 +250,54 @@ def test_a_number_the_curve_keeps_out_of_the_band_stands_right_under_the_curve_b
         assert curve_there < -diagrams.NUMBER_CLEARANCE_MM, "the curve takes the band here"
         assert curve_there - y1 <= diagrams.LOW_ROW_CLEARANCE_MM + 1.5, (text, curve_there, y1)
         assert abs(shown[text].at[0] - ticks[text]) <= (x1 - x0) / 2 + diagrams.NUMBER_REACH_MM
+
+
+@functools.cache
+def starter_analysis(kind: str):
+    from graphplan.scene import loads
+    from graphplan.starters import starter
+
+    return analyse(loads(starter(kind)))
+
+
+def lowest_mark_between(part: list, kind: str, x0: float, x1: float) -> float:
+    """The lowest point between x0 and x1 of a diagram's curves, chords and the rings of the plans' values on
+    them, or the axis where they stay over it (mm): the rings cut by the span as the discs they are."""
+    layers = {layer.name: layer.items for layer in part}
+    span = box(x0, -1e9, x1, 1e9)
+    rings = [Point(item.centre).buffer(item.radius).intersection(span) for item in layers[f"{kind}-curves"]
+             if isinstance(item, Circle) and item.radius == diagrams.PLAN_RING_MM]
+    return min([lowest_between(part, kind, x0, x1), *(ring.bounds[1] for ring in rings if not ring.is_empty)])
+
+
+@pytest.mark.parametrize(("kind_of_scene", "name"), [("starter", "shaper"), ("starter", "crank-rocker"),
+                                                     ("starter", "slotted-lever"), ("fixture", "shaper_six_bar"),
+                                                     ("fixture", "stephenson_six_bar"), ("fixture", "slider_driven")])
+@pytest.mark.parametrize(("axis", "field"), [(None, None), (360.0, 96.0)])
+def test_every_number_stands_by_its_tick_with_only_the_curve_between(kind_of_scene, name, axis, field):
+    """A number stands at its tick (stepped at most its reach aside) right under the axis, or right under the curve
+    or ring that passes its tick: never farther down with nothing between to say whose it is.  The shaper
+    starter's vE has a ring at nought at position 1 (the velocity plan there, at an extreme position), which took
+    the band's spot by the tick: its 1 went to the row under the curve's lowest point, 80 mm down the ordinate
+    axis of the sheet's diagram."""
+    analysis = starter_analysis(name) if kind_of_scene == "starter" else analysis_of(name)
+    sizes = {key: value for key, value in (("axis_mm", axis), ("field_mm", field)) if value is not None}
+    record = of_analysis(analysis, **sizes)
+    lettered = diagrams.parts(record, strings(analysis.scene.locale))
+    along_mm = 1.0 / record.scales.along
+    ticks = (record.nodes * along_mm).tolist()
+    for kind, part in zip(diagrams.KINDS, lettered, strict=True):
+        numbers, _ = numbers_and_lines(part, kind)
+        assert numbers, kind
+        for number in numbers:
+            x0, _, x1, y1 = text_extent(number)
+            half = (x1 - x0) / 2
+            tick = min((x for n, x in zip(record.numbers, ticks, strict=True) if str(n) == number.text),
+                       key=lambda x: abs(number.at[0] - x))
+            reach = half + diagrams.NUMBER_STEP_MM * math.floor((half + diagrams.NUMBER_REACH_MM)
+                                                                / diagrams.NUMBER_STEP_MM)
+            assert abs(number.at[0] - tick) <= reach - half + 1e-9, (kind, number.text)
+            # What stands over the number at its tick: the axis, or lower the curves and rings that cross there.
+            over = min(0.0, lowest_mark_between(part, kind, tick - reach, tick + reach))
+            assert y1 < 0.0, (kind, number.text)
+            assert over - y1 <= diagrams.NUMBER_CLEARANCE_MM + 0.05, (kind, number.text, over, y1)

@@ -70,9 +70,9 @@ NUMBER_CLEARANCE_MM = 0.8
 NUMBER_HEIGHT_MM = 1.45 * NUMBER_SIZE
 BAND_DEPTH_MM = NUMBER_CLEARANCE_MM + NUMBER_HEIGHT_MM
 # Where the curve takes a number's spot in the band, the number steps along it by these (mm), no farther than its
-# box's edge beyond its tick by NUMBER_REACH_MM (it reads as its tick's); failing that it stands at its tick in a
-# second row under the lowest point of the curves, LOW_ROW_CLEARANCE_MM under it (a ringed value there takes its
-# spots as the curve does); failing both it is left out, its tick kept.  The rows end within the 4 mm a diagram
+# box's edge beyond its tick by NUMBER_REACH_MM (it reads as its tick's); failing that it stands at its tick right
+# under the curves and the rings on them, LOW_ROW_CLEARANCE_MM under them, no lower than a second row under their
+# lowest point; failing both it is left out, its tick kept.  The rows end within the 4 mm a diagram
 # kept under its curves before it had them: deeper, they made every diagram taller, and a sheet that held the
 # three beside the plans held them no more.  Never over the axis: a number there beside the curve read as
 # lettering the curve.
@@ -230,8 +230,10 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
 
     drawn: list[Primitive] = [Polyline(curve, _CURVE)]
     drawn.append(Polyline(points, _CHORD))
-    if kind == "velocity":  # the values the velocity plans give, ringed: the third method beside the two
-        drawn.extend(Circle((x * along_mm, value / scale), PLAN_RING_MM, _AXIS, None) for x, value in record.v_plans)
+    # The values the velocity plans give, ringed: the third method beside the two.
+    rings = [Circle((x * along_mm, value / scale), PLAN_RING_MM, _AXIS, None)
+             for x, value in record.v_plans] if kind == "velocity" else []
+    drawn.extend(rings)
     drawn.extend(dot_marker(p, 0.55, _CHORD_COLOUR) for k, p in enumerate(points) if k % shown == 0)
     if pole is not None:
         drawn.append(dot_marker((-pole, 0.0), 0.7))
@@ -247,7 +249,11 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
         obstacles = obstacles_of(axes + rays + drawn + labels)
         ticks = [(x, str(number)) for k, (x, number)
                  in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True)) if ticked(k)]
-        placed = _numbers(ticks, obstacles, rows, [shapely.LineString(curve), shapely.LineString(points)])
+        # A ring marks the curve's value at its tick, so a number steps under it as under the curve: a ring on the
+        # axis (a velocity of nought, at an extreme position) takes the band's spot at its tick as the curve does.
+        marks = [shapely.LineString(curve), shapely.LineString(points),
+                 *(shapely.Point(ring.centre).buffer(ring.radius) for ring in rings)]
+        placed = _numbers(ticks, obstacles, rows, marks)
         if pole is not None:
             numbers = [text_box(text) for text in placed]
             placed += (_pole_distance(words["kd_pole_distance"], pole, axes[1].start[1], high,
@@ -299,8 +305,9 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
             Layer(f"{kind}-caption", caption)]
 
 
-def _under_the_curves(curves: list[shapely.LineString], x0: float, x1: float) -> float:
-    """The lowest point (mm, nought or under) of the ``curves`` between ``x0`` and ``x1``."""
+def _under_the_curves(curves: list, x0: float, x1: float) -> float:
+    """The lowest point (mm, nought or under) of the ``curves`` (and rings, shapely geometries) between ``x0`` and
+    ``x1``."""
     span = shapely.box(x0, -1e9, x1, 1e9)
     return min([0.0, *(piece.bounds[1] for piece in shapely.intersection(curves, span) if not piece.is_empty)])
 
@@ -316,13 +323,15 @@ def _number_rows(low: float) -> list[tuple[float, float]]:
 
 
 def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[float, float]],
-             curves: list[shapely.LineString]) -> tuple[Text, ...]:
+             curves: list) -> tuple[Text, ...]:
     """The positions' numbers, each in the first row where a spot at its tick ``(x, number)``, or stepped a little
     along the row, covers none of the lines (``obstacles``) nor another number; one with no such spot is left out,
-    its tick kept.  The rows are tried in turn: the band under the axis, then right under the ``curves`` where
-    they cross the band within the number's reach of its tick (a number there still stands by its tick, where
-    the row under the curves' lowest point left it far under it: the shaper's 5, 16 mm down), then the other
-    ``rows`` (:func:`_number_rows`).
+    its tick kept.  The rows are tried in turn: the band under the axis, then, where the ``curves`` (and the rings
+    on them) cross the band within the number's reach of its tick, right under them there, no lower than the
+    row under their lowest point (:func:`_number_rows`), which so is the row by the tick where the curves dip
+    lowest there.  Nowhere else: a number in the row under the curves' lowest point far from where they pass its
+    tick stood far under the tick with nothing between to say whose it is (the shaper's 5 of aE, 16 mm down; its
+    1 of vE, whose ring on the axis took the band, 80 mm down at the ordinate axis's foot).
 
     Every spot lies in the band or between it and the row under the curves' lowest point, within a number's reach
     of its tick: inside the diagram's extent, whatever the curves do, and under the axis.
@@ -331,15 +340,16 @@ def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[f
     spots: list[tuple[int, float, float]] = []  # (tick, centre x, baseline) of every spot, in the order tried
     boxes = []
     band, *lower = rows
+    # The extent keeps room down to the row under the curves' lowest point; a ring dips a little under that.
+    floor = lower[-1][1] if lower else band[1]
     for index, (x, number) in enumerate(ticks):
         half = text_width(number, NUMBER_SIZE) / 2
         most = int((half + NUMBER_REACH_MM) / NUMBER_STEP_MM)
         steps = sorted(range(-most, most + 1), key=lambda k: (abs(k), -k))
         reach = most * NUMBER_STEP_MM + half
-        under = _under_the_curves(curves, x - reach, x + reach) - LOW_ROW_CLEARANCE_MM
-        nearer = under < band[1] - 1e-9 and all(under > top + 1e-9 for _, top in lower)
-        by_the_tick = [(under - NUMBER_HEIGHT_MM, under)] if nearer else []
-        for y0, y1 in [band, *by_the_tick, *lower]:
+        under = max(_under_the_curves(curves, x - reach, x + reach) - LOW_ROW_CLEARANCE_MM, floor)
+        by_the_tick = [(under - NUMBER_HEIGHT_MM, under)] if under < band[1] - 1e-9 else []
+        for y0, y1 in [band, *by_the_tick]:
             for k in steps:
                 centre = x + k * NUMBER_STEP_MM
                 spots.append((index, centre, y0 + 0.3 * NUMBER_SIZE))
