@@ -254,13 +254,16 @@ def pole_distance(span_mm: float, range_value: float, scale: float, time_scale: 
 
 
 def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: int = DENSE_SAMPLES,
-                       axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM) -> KinematicDiagrams:
+                       axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM,
+                       greatest_pole_mm: float | None = None) -> KinematicDiagrams:
     """The kinematic diagrams of the output link (``[positions] working.link``) over the driver's run.
 
     The run is a crank's turn, or once over a rocking crank's swing or a
     slider's travel in the direction the driver moves.  ``samples`` analytic
     values over the run draw the exact curves; the chord method reads only
-    the displacements at the scene's ``count`` positions.
+    the displacements at the scene's ``count`` positions.  The pole
+    distances stop at ``greatest_pole_mm`` (:func:`greatest_pole` of the
+    axis when not given), longer for a sheet with the room for them.
     """
     scene = mechanism.scene
     working = scene.positions.working
@@ -310,7 +313,7 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     along_scale = span / axis_mm
     time_scale = along_scale / abs(speed)
     displacement_scale = fit_scale(_drawn_range(s), field_mm)
-    greatest = greatest_pole(axis_mm)
+    greatest = greatest_pole(axis_mm) if greatest_pole_mm is None else greatest_pole_mm
     velocity_pole = pole_distance(field_mm, _drawn_range(v), displacement_scale, time_scale, greatest)
     velocity_scale = displacement_scale / (time_scale * velocity_pole)
     acceleration_pole = pole_distance(field_mm, _drawn_range(a), velocity_scale, time_scale, greatest)
@@ -338,10 +341,12 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
         driver_rate=rate, reversed=working.sense in ("cw", "backward"))
 
 
-def of_analysis(analysis: Analysis, axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM) -> KinematicDiagrams:
+def of_analysis(analysis: Analysis, axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM,
+                greatest_pole_mm: float | None = None) -> KinematicDiagrams:
     """:func:`kinematic_diagrams` of a run's mechanism and positions (``graphplan.analysis.Analysis``), with
     the output link's velocity read off the velocity plan of each position that has one (:attr:`v_plans`)."""
-    record = kinematic_diagrams(analysis.mechanism, analysis.positions, axis_mm=axis_mm, field_mm=field_mm)
+    record = kinematic_diagrams(analysis.mechanism, analysis.positions, axis_mm=axis_mm, field_mm=field_mm,
+                                greatest_pole_mm=greatest_pole_mm)
     return replace(record, v_plans=_read_off_plans(analysis, record))
 
 

@@ -797,13 +797,21 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
     # larger way that an empty sheet holds, largest first, for the packing to take the largest the room left holds.
     # Each is measured unlettered and lettered only where the packing takes it (:attr:`Panel.lettered`).
-    larger = []
-    for axis, field in _larger_diagram_sizes(intervals):
-        title, drawn = drawn_at(axis, field)
-        way = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), usual.parts, title, to_scale=False,
-                    lettered=_lettered_diagrams(analysis, axis, field))
-        if holds(sheet, form, width(way), height(way)):
-            larger.append(way)
+    def way_at(axis: float, field: float, pole: float | None = None) -> Panel:
+        title, drawn = diagram_parts(analysis, axis, field, lettered=False, greatest_pole=pole)
+        return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), usual.parts, title, to_scale=False,
+                     lettered=_lettered_diagrams(analysis, axis, field, pole))
+
+    sizes = _larger_diagram_sizes(intervals)
+    larger = [way for way in (way_at(axis, field) for axis, field in sizes) if holds(sheet, form, width(way), height(way))]
+    if _poles_held(analysis):
+        # The diagrams with longer poles as one way more, the largest an empty sheet holds: a way more of every size
+        # took the slider-driven lever's diagrams off the sheet of its plans, a page's rearranging trying only so
+        # many of its drawings' ways (packing._MOST_REARRANGEMENTS) and no longer reaching the one that fitted.
+        longer = (way_at(axis, field, pole) for axis, field in sizes for pole in _longer_poles(axis))
+        largest = max((way for way in longer if holds(sheet, form, width(way), height(way))),
+                      key=lambda way: width(way) * height(way), default=None)
+        larger += [largest] if largest is not None else []
     if not larger:
         return usual
     # The parts are the usual diagrams': where no sheet holds a way whole, they stand apart at the usual size.
@@ -842,11 +850,13 @@ def _apart(name: str, label: str, drawn: Sequence[Sequence[Layer]], drawn_alone:
     return Panel(name, tuple(stacked(drawn)), parts, label, to_scale=False, drawn_alone=drawn_alone)
 
 
-def _lettered_diagrams(analysis: Analysis, axis: float, field: float) -> Callable[[], tuple[Layer, ...]]:
-    """The kinematic diagrams drawn at ``axis`` and ``field`` stacked with their labels, laid out when asked."""
+def _lettered_diagrams(analysis: Analysis, axis: float, field: float,
+                       pole: float | None = None) -> Callable[[], tuple[Layer, ...]]:
+    """The kinematic diagrams drawn at ``axis`` and ``field`` (their pole distances up to ``pole``, when given)
+    stacked with their labels, laid out when asked."""
     from . import diagrams as diagrams_layout
 
-    return lambda: tuple(diagrams_layout.stacked(diagram_parts(analysis, axis, field)[1]))
+    return lambda: tuple(diagrams_layout.stacked(diagram_parts(analysis, axis, field, greatest_pole=pole)[1]))
 
 
 # The kinematic diagrams' parts by the φ axis and field they are drawn at, lettered or not, for an analysis: the
@@ -854,21 +864,45 @@ def _lettered_diagrams(analysis: Analysis, axis: float, field: float) -> Callabl
 _diagram_parts: OwnedMemo[tuple[str, list[list[Layer]]]] = OwnedMemo()
 
 
-def diagram_parts(analysis: Analysis, axis: float, field: float,
-                  lettered: bool = True) -> tuple[str, list[list[Layer]]]:
+def diagram_parts(analysis: Analysis, axis: float, field: float, lettered: bool = True,
+                  greatest_pole: float | None = None) -> tuple[str, list[list[Layer]]]:
     """The title and the parts (:func:`graphplan.render.diagrams.parts`) of the kinematic diagrams of ``analysis``
     drawn on a φ axis of ``axis`` mm and fields ``field`` mm tall, laid out once; not ``lettered``, without the
-    labels whose room alone is kept (the extent is the same)."""
+    labels whose room alone is kept (the extent is the same); their pole distances up to ``greatest_pole`` mm
+    where it is given (:func:`_longer_poles`), else up to the axis's usual greatest."""
     from ..kinematic_diagrams import of_analysis
     from . import diagrams as diagrams_layout
 
     def drawn() -> tuple[str, list[list[Layer]]]:
         text = strings(analysis.scene.locale)
-        record = of_analysis(analysis, axis_mm=axis, field_mm=field)
+        record = of_analysis(analysis, axis_mm=axis, field_mm=field, greatest_pole_mm=greatest_pole)
         return (text["kd_title"].format(link=record.link, point=record.point or ""),
                 diagrams_layout.parts(record, text, lettered))
 
-    return _diagram_parts.get(analysis, (axis, field, lettered), drawn)
+    return _diagram_parts.get(analysis, (axis, field, lettered, greatest_pole), drawn)
+
+
+# A derivative whose pole distance stops at its greatest stands lower than its field: the more so the more nearly
+# uniform the motion (the slider-driven lever's ε4 stood 12 mm tall in a field of 96, its ψ4 nearly a straight
+# line over the rod's steady travel).  A sheet with the room beside them has them drawn with poles longer by these
+# multiples of the greatest, up to as long as the φ axis (:func:`_diagrams_panel`).
+_POLE_GROWTHS = (3.0, 2.0)
+
+
+def _poles_held(analysis: Analysis) -> bool:
+    """Whether a pole distance of the usual diagrams of ``analysis`` stopped at its greatest."""
+    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, greatest_pole, of_analysis
+
+    scales = of_analysis(analysis, axis_mm=AXIS_MM, field_mm=FIELD_MM).scales
+    return max(scales.velocity_pole, scales.acceleration_pole) >= greatest_pole(AXIS_MM)
+
+
+def _longer_poles(axis: float) -> tuple[float, ...]:
+    """The greatest pole distances (mm), longer than the usual greatest, that the larger ways of diagrams on a φ
+    axis ``axis`` mm long are tried with where the usual's stopped there (:data:`_POLE_GROWTHS`)."""
+    from ..kinematic_diagrams import greatest_pole
+
+    return tuple(float(math.floor(min(greatest_pole(axis) * growth, axis))) for growth in _POLE_GROWTHS)
 
 
 # Diagrams drawn larger on a sheet with room are tried at these multiples of the usual φ axis and of the usual
