@@ -330,8 +330,8 @@ def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[f
     on them) cross the band within the number's reach of its tick, right under them there, no lower than the
     row under their lowest point (:func:`_number_rows`), which so is the row by the tick where the curves dip
     lowest there.  Nowhere else: a number in the row under the curves' lowest point far from where they pass its
-    tick stood far under the tick with nothing between to say whose it is (the shaper's 5 of aE, 16 mm down; its
-    1 of vE, whose ring on the axis took the band, 80 mm down at the ordinate axis's foot).
+    tick stood far under the tick with nothing between to say whose it is (the shaper's 5 of aE, 16 mm down; the
+    shaper starter's 1 of vE, whose ring on the axis took the band, 80 mm down at the ordinate axis's foot).
 
     Every spot lies in the band or between it and the row under the curves' lowest point, within a number's reach
     of its tick: inside the diagram's extent, whatever the curves do, and under the axis.
