@@ -1062,21 +1062,130 @@ def _segment_distance(point, start, end):
     return LineString((start, end)).distance(ShapelyPoint(point))
 
 
-@pytest.mark.parametrize(("masses", "planes", "plane_index", "folded"), [
-    # The rotor starter's plane L: (m3r3)L, 6.7 mm long, turns back 16° off (m2r2)L and ended on its arrowhead.
-    ("starter", None, 0, "(m3r3)L"),
-    # The hunter's B13, plane L: (m3r3)L runs straight back down (m2r2)L, over it.
-    ([RotatingMass(20, 1, 0, 0), RotatingMass(30, 2, 90, 2), RotatingMass(10, 3, -270, 5)], (1, 4), 0, "(m3r3)L"),
-], ids=["starter", "collinear"])
-def test_a_share_folded_back_over_the_one_before_is_drawn_beside_it_with_leaders(masses, planes, plane_index, folded):
-    if masses == "starter":
-        import tomllib
-        from importlib import resources
+def _starter_result():
+    import tomllib
+    from importlib import resources
 
-        data = tomllib.loads(resources.files("graphplan").joinpath("templates/rotor.toml").read_text(encoding="utf-8"))
-        result = balance(read(data["balancing"]))
-    else:
-        result = balance(BalancingSpec(masses, planes=planes, correction_radius=2))
+    data = tomllib.loads(resources.files("graphplan").joinpath("templates/rotor.toml").read_text(encoding="utf-8"))
+    return balance(read(data["balancing"]))
+
+
+# The hunter's B13: in plane L (m3r3)L runs straight back down (m2r2)L, over it, laid off in the masses' order.
+B13 = [RotatingMass(20, 1, 0, 0), RotatingMass(30, 2, 90, 2), RotatingMass(10, 3, -270, 5)]
+# Two masses nearly opposite: whichever is laid off second turns back onto the first (4° off straight back), in
+# either order.
+FOLDED_EITHER_WAY = [RotatingMass(1.0, 1.0, 0.0), RotatingMass(0.3, 1.0, 176.0)]
+
+
+def _drawn_chain(layers, name):
+    """The plane's arrows walked head to tail from its pole (the dot), as drawn: the arrows in the order walked,
+    the arrows no walk reaches, and how far the last head stands from the pole (mm)."""
+    items = layers[f"plane-{name}-vectors"]
+    arrows = [item for item in items if isinstance(item, Arrow)]
+    (pole,) = [complex(*item.centre) for item in items if not isinstance(item, Arrow)]
+    walked, at = [], pole
+    left = list(arrows)
+    while left:
+        following = [arrow for arrow in left if abs(complex(*arrow.start) - at) < 0.01]
+        if len(following) != 1:
+            break
+        walked.append(following[0])
+        left.remove(following[0])
+        at = complex(*following[0].end)
+    return walked, left, abs(at - pole)
+
+
+def _caption_scale(layers, name):
+    """μ (kg·m/mm) as the plane's caption writes it."""
+    (value,) = [float(re.fullmatch(r"μ = ([\d.e+-]+) kg·m/mm", item.text).group(1))
+                for item in layers[f"plane-{name}-caption"] if item.text.startswith("μ = ")]
+    return value
+
+
+@pytest.mark.parametrize(("masses", "planes"), [("starter", None), (B13, (1, 4)), (SHAFT_OF_FOUR, (0.04, 0.22))],
+                         ids=["starter", "B13", "shaft-of-four"])
+def test_each_plane_s_polygon_is_drawn_as_a_closed_chain_of_its_shares(masses, planes):
+    """The rotor starter's plane L drew (m3r3)L, folded back onto (m2r2)L, beside the chain on dashed leaders, and
+    the polygon read as open: the shares are laid off in an order that turns none back onto the one before."""
+    result = _starter_result() if masses == "starter" else balance(BalancingSpec(masses, planes=planes,
+                                                                                  correction_radius=0.05))
+    layers = {layer.name: layer.items for layer in drawing.layout(result)}
+    left_plane, right_plane = result.spec.planes
+    for plane in result.planes:
+        name = plane.name
+        walked, stray, gap = _drawn_chain(layers, name)
+        # Every arrow on the walk from the pole, head to tail, the correction last and back on the pole.
+        assert stray == [] and gap < 0.01
+        assert walked[-1].key.endswith(f"m{name}r{name}")
+        # The shares walked are the masses' m·r carried to the plane by moments, worked out here afresh, each drawn
+        # once at the caption's μ; the correction is their sum turned back.
+        scale = _caption_scale(layers, name)
+        other = right_plane if plane.position == left_plane else left_plane
+        shares = [mass.unbalance * (other - mass.plane) / (other - plane.position) / scale
+                  for mass in result.spec.masses]
+        drawn = [complex(*arrow.end) - complex(*arrow.start) for arrow in walked[:-1]]
+        assert len(drawn) == sum(abs(share) >= drawing.ZERO_MM for share in shares)
+        for vector in drawn:
+            assert min(abs(vector - share) for share in shares) < 1e-6
+        correction = complex(*walked[-1].end) - complex(*walked[-1].start)
+        assert abs(correction + sum(shares)) < 0.01
+        # Nothing is drawn beside the chain, so nothing needs saying: no leaders, no caption line about it.
+        assert not [item for item in layers[f"plane-{name}-reference"]
+                    if getattr(item, "stroke", None) in (drawing._LEADER, drawing._SHARE_LEADER)]
+        assert not [item for item in layers[f"plane-{name}-caption"] if "aside" in item.text]
+        # The caption's equation is the order drawn: its terms are the walked arrows' names, one by one.
+        caption = " ".join(item.text for item in layers[f"plane-{name}-caption"])  # a long equation is broken
+        (equation,) = re.findall(r"((?:\S+ \+ )+\S+) = 0", caption)
+        assert [drawing._id(term) for term in equation.split(" + ")] == [
+            arrow.key.removeprefix(f"plane-{name}-") for arrow in walked]
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+@pytest.mark.parametrize(("masses", "planes"), [
+    (FOLDED_EITHER_WAY, ()),
+    ([RotatingMass(5.0, 0.1, 0.0, 0.2), RotatingMass(5.0, 0.1, 180.0, 0.8)], (0.0, 1.0)),  # a couple alone
+    ([RotatingMass(4.0, 0.25, 70.0, 0.3)], (0.0, 1.0)),  # one mass
+], ids=["folded-either-way", "couple", "one-mass"])
+def test_a_vector_drawn_beside_the_chain_is_named_in_the_caption_with_what_it_would_cover(masses, planes, locale):
+    """Where no order of the shares keeps every side in its place (a share folded back whichever goes first, a
+    correction along the masses), the caption says which vector stands aside and why: unexplained, the dashed
+    leaders read as a polygon left open."""
+    from graphplan.locale import strings
+
+    text = strings(locale)
+    result = balance(BalancingSpec(masses, planes=planes, correction_radius=0.1))
+    layers = {layer.name: layer.items for layer in drawing.layout(result, text)}
+    names = {drawing._id(vector.name): vector.name for plane in result.planes for vector in plane.vectors}
+
+    def squeezed(value: str) -> str:  # a caption broken over lines, Chinese at any ideograph, read whole
+        return "".join(value.split())
+
+    template = squeezed(text["bal_drawn_apart"])
+    tail = template[template.index("{covered}") + len("{covered}"):]
+    for plane in result.planes:
+        walked, stray, _ = _drawn_chain(layers, plane.name)
+        assert stray  # the walk from the pole stops at the first arrow drawn apart
+        drawn = {arrow.key.removeprefix(f"plane-{plane.name}-") for arrow in walked + stray}
+        caption = squeezed("".join(item.text for item in layers[f"plane-{plane.name}-caption"]))
+        # One line for each arrow off the chain, and none for another.
+        assert caption.count(tail) == len(stray)
+        for arrow in stray:
+            key = arrow.key.removeprefix(f"plane-{plane.name}-")
+            vector = names[key]
+            pattern = (re.escape(template).replace(re.escape("{vector}"), re.escape(vector))
+                       .replace(re.escape("{covered}"), "(?P<covered>.+?)")
+                       .replace(re.escape("{offset}"), "(?P<offset>[\\d.,]+)"))
+            (found,) = [match.groupdict() for match in re.finditer(pattern, caption)]
+            assert float(found["offset"].replace(",", ".")) == drawing.BESIDE_MM
+            # What it would cover is a share of the plane that is drawn.
+            assert {drawing._id(covered) for covered in found["covered"].split(",")} <= drawn - {key}
+
+
+@pytest.mark.parametrize(("masses", "planes", "plane_index", "folded"), [
+    (FOLDED_EITHER_WAY, (), 0, "m2r2"),
+], ids=["folded-either-way"])
+def test_a_share_folded_back_over_the_one_before_is_drawn_beside_it_with_leaders(masses, planes, plane_index, folded):
+    result = balance(BalancingSpec(masses, planes=planes, correction_radius=2))
     plane = result.planes[plane_index]
     scale = drawing.plane_scale(plane)
     layers = {layer.name: layer.items for layer in drawing.layout(result)}

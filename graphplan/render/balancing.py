@@ -3,7 +3,10 @@
 Each correction plane's polygon is drawn from its record
 (:class:`graphplan.rotor_balancing.CorrectionPlane`) as the student draws
 it: from the pole, the masses' mass-radius products (their shares in the
-plane) laid off head to tail at the plane's μ (kg·m per mm, the standard
+plane) laid off head to tail at the plane's μ (in the masses' order, or, where
+that turns a share back onto the one before it, in the first order that does
+not: a sum is the same in any order, and the caption's equation is written in
+the order drawn) (kg·m per mm, the standard
 scale that draws it about as large as the others: a plane near the masses'
 middle carries small shares and would shrink to a knot of labels at the
 other plane's scale), each named beside its
@@ -20,13 +23,14 @@ English when none is given.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
 
 from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
 
 from ..locale import Count, strings
-from ..rotor_balancing import BalancingResult, CorrectionPlane, static_couple
+from ..rotor_balancing import BalancingResult, CorrectionPlane, PolygonVector, static_couple
 from ..scales import format_scale, standard_scale
 from .force_rows import CAPTION_WIDTH_MM, caption_lines
 from .labels import Anchor, Placement, obstacles_of, place_labels, remembered
@@ -77,6 +81,9 @@ HIDDEN_DEG = 25.0
 # acute corner stands clear of the other but near the corner, and stays where it is.)
 FOLDED_BACK_DEG = 25.0
 FOLDED_ONTO_MM = 2.5
+# The orders of laying off the shares tried, at most, for one that draws none of them apart (a share folded back, a
+# correction along the masses): six masses' 720 orders, and a few thousand of more, take a few milliseconds each.
+MOST_ORDERS = 2000
 # The radii tried for the correction's angle θ (mm), the first preferred: the one whose arc crosses the fewest sides.
 ANGLE_RADII_MM = (7.0, 5.5, 4.5, 9.0, 11.0)
 
@@ -98,8 +105,9 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
     # None but for a one-plane balancing, whose only plane says it under its caption.
     couple = static_couple(result)
     last = len(result.planes) - 1
-    panels = [_polygon(plane, plane_scale(plane), words, placed, couple if k == last else None)
-              for k, plane in enumerate(result.planes)]
+    laid = [laid_off(plane) for plane in result.planes]
+    panels = [_polygon(plane, _scale(plane), words, placed, couple if k == last else None)
+              for k, plane in enumerate(laid)]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
         # Broken as a force polygon's caption is: a long equation of many named masses set no wider than the
@@ -142,9 +150,103 @@ def balancing_svg(result: BalancingResult, text: Mapping[str, str] | None = None
 
 
 def plane_scale(plane: CorrectionPlane) -> float:
-    """μ (kg·m/mm): the standard scale at which the plane's polygon fits :data:`POLYGON_FIELD_MM`."""
+    """μ (kg·m/mm): the standard scale at which the plane's polygon, as it is laid off (:func:`laid_off`), fits
+    :data:`POLYGON_FIELD_MM`."""
+    return _scale(laid_off(plane))
+
+
+def _scale(plane: CorrectionPlane) -> float:
+    """μ (kg·m/mm) of ``plane``'s polygon in the order its vectors stand in."""
     extent = _extent(plane)
     return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else 1.0
+
+
+def laid_off(plane: CorrectionPlane) -> CorrectionPlane:
+    """``plane`` with its shares in the order the drawing lays them off: the masses' order where that draws every
+    vector in its place in the chain, else the first order (of :data:`MOST_ORDERS`) that draws fewest apart, and of
+    those the one whose corners open widest; its equation written in that order.
+
+    The rotor starter's plane L laid (m3r3)L, 6.7 mm long, back along (m2r2)L: drawn beside the chain with dashed
+    leaders to keep its arrowhead off the other's, the polygon read as open.  Laid off before (m1r1)L it closes
+    with every side in its place, as a student may lay the shares in any order."""
+    scale = _scale(plane)
+
+    def mm(value: complex) -> complex:
+        return value / scale
+
+    masses = [k for k, vector in enumerate(plane.vectors) if vector.role == "mass"]
+    if _drawn_apart(plane, mm) == 0:
+        return plane
+    best: tuple[tuple[int, float], CorrectionPlane] | None = None
+    for order in _orders(plane, masses, mm):
+        candidate = _reordered(plane, order)
+        score = (_drawn_apart(candidate, mm), -_narrowest_corner(candidate, mm))
+        if best is None or score < best[0]:
+            best = (score, candidate)
+    return plane if best is None else best[1]
+
+
+def _orders(plane: CorrectionPlane, masses: Sequence[int], mm) -> Iterator[tuple[int, ...]]:
+    """The orders of the shares (their indices among ``plane``'s vectors), the masses' own first, then as
+    permutations go, leaving out every order with a share folded back onto the one before it (:func:`_folds`) but
+    the masses' own, at most :data:`MOST_ORDERS` of them."""
+    yield tuple(masses)
+    drawn = {k: mm(plane.vectors[k].vector) for k in masses}
+    count = 1
+
+    def extend(order: list[int], before: complex | None) -> Iterator[tuple[int, ...]]:
+        nonlocal count
+        if len(order) == len(masses):
+            count += 1
+            yield tuple(order)
+            return
+        for k in masses:
+            if count >= MOST_ORDERS:
+                return
+            if k in order:
+                continue
+            side = drawn[k]
+            shown = abs(side) >= ZERO_MM
+            if shown and before is not None and _folds(before, side):
+                continue
+            order.append(k)
+            yield from extend(order, side if shown else before)
+            order.pop()
+
+    for order in extend([], None):
+        if order != tuple(masses):
+            yield order
+
+
+def _reordered(plane: CorrectionPlane, order: Sequence[int]) -> CorrectionPlane:
+    """``plane`` with its shares laid off head to tail from its pole in ``order``, the correction closing them as
+    before, and the equation written in that order (a mass with no share in the plane left out, as it is)."""
+    tip = plane.vectors[0].start
+    vectors = []
+    for k in order:
+        share = plane.vectors[k]
+        vectors.append(PolygonVector(share.name, tip, tip + share.vector, share.role))
+        tip += share.vector
+    correction = plane.vectors[-1]
+    terms = [plane.vectors[k].name for k in order if plane.factors[k] != 0.0]
+    return replace(plane, vectors=(*vectors, correction), equation=" + ".join([*terms, correction.name]) + " = 0")
+
+
+def _drawn_apart(plane: CorrectionPlane, mm) -> int:
+    """How many of ``plane``'s vectors are drawn beside their places in the chain: shares folded back, and the
+    correction where it lies along the masses."""
+    folded = _folded_back(plane, mm)
+    return len(folded) + bool(_beside(plane, mm, folded))
+
+
+def _narrowest_corner(plane: CorrectionPlane, mm) -> float:
+    """The smallest angle (rad) between two sides the polygon draws one after the other, the correction back to
+    the first share included: 0 where a side runs back along the one before it."""
+    sides = [mm(vector.vector) for vector in plane.vectors if abs(mm(vector.vector)) >= ZERO_MM]
+    if len(sides) < 2:
+        return math.pi
+    return min(abs(math.atan2((after / -before).imag, (after / -before).real))
+               for before, after in zip(sides, sides[1:] + sides[:1]))
 
 
 def _extent(plane: CorrectionPlane) -> float:
@@ -165,6 +267,11 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str], plac
 
     folded = _folded_back(plane, mm)
     beside = _beside(plane, mm, folded)
+    # What stands apart from its place in the chain, and what it would cover there: the caption says why, or the
+    # polygon, a vector joined to it by dashed lines, reads as open.
+    apart = [(plane.vectors[index].name, [_drawn_before(plane, mm, index)]) for index in sorted(folded)]
+    if beside:
+        apart.append((plane.vectors[-1].name, [plane.vectors[k].name for k in _under_correction(plane, mm)]))
     arrows: list[Primitive] = []
     named: list[tuple[str, Arrow]] = []
     leaders: list[Primitive] = []
@@ -204,7 +311,12 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str], plac
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
-    return key, layers, extent, _caption(plane, None if empty else scale, text, placed, couple)
+    return key, layers, extent, _caption(plane, None if empty else scale, text, placed, couple, apart)
+
+
+def _drawn_before(plane: CorrectionPlane, mm, index: int) -> str:
+    """The name of the share drawn last before the vector at ``index`` (too short ones are not drawn)."""
+    return next(vector.name for vector in reversed(plane.vectors[:index]) if abs(mm(vector.vector)) >= ZERO_MM)
 
 
 def _beside(plane: CorrectionPlane, mm, folded: dict[int, complex] | None = None) -> complex:
@@ -219,14 +331,7 @@ def _beside(plane: CorrectionPlane, mm, folded: dict[int, complex] | None = None
     def local(point: complex) -> complex:  # along the correction from its tail, and across it
         return (point - tail) / along
 
-    for vector in plane.vectors[:-1]:
-        start, end = local(mm(vector.start)), local(mm(vector.end))
-        common = min(max(start.real, end.real), length) - max(min(start.real, end.real), 0.0)
-        if abs(start.imag) < ALONG_MM and abs(end.imag) < ALONG_MM and common > ALONG_MM:
-            break
-        if _hidden_share(start, end, length) >= 0.5:
-            break
-    else:
+    if not _under_correction(plane, mm):
         return 0j
     # Away from the chain's corners that stand off the line; to the right of the correction where none does.
     offside = sum(local(mm(vertex)).imag for vertex in plane.vertices)
@@ -238,6 +343,25 @@ def _beside(plane: CorrectionPlane, mm, folded: dict[int, complex] | None = None
         if (shift / side).real > 0 and abs((share / along).imag) < abs(share) * math.sin(math.radians(HIDDEN_DEG)):
             return -side
     return side
+
+
+def _under_correction(plane: CorrectionPlane, mm) -> list[int]:
+    """The indices of the shares the correction would hide where it closes the polygon: those that run along it,
+    within :data:`ALONG_MM` over a common stretch longer than that, or half or more of whose length runs that close
+    (:func:`_hidden_share`)."""
+    tail, head = mm(plane.vectors[-1].start), mm(plane.vectors[-1].end)
+    length = abs(head - tail)
+    if length < ZERO_MM:
+        return []
+    along = (head - tail) / length
+    hidden = []
+    for index, vector in enumerate(plane.vectors[:-1]):
+        start, end = (mm(vector.start) - tail) / along, (mm(vector.end) - tail) / along
+        common = min(max(start.real, end.real), length) - max(min(start.real, end.real), 0.0)
+        if ((abs(start.imag) < ALONG_MM and abs(end.imag) < ALONG_MM and common > ALONG_MM)
+                or _hidden_share(start, end, length) >= 0.5):
+            hidden.append(index)
+    return hidden
 
 
 def _hidden_share(start: complex, end: complex, length: float) -> float:
@@ -273,25 +397,30 @@ def _folded_back(plane: CorrectionPlane, mm) -> dict[int, complex]:
         if vector.role != "mass" or abs(mm(vector.vector)) < ZERO_MM:
             continue
         side = mm(vector.vector)
-        if before is not None:
+        if before is not None and _folds(before, side):
             back = -before / abs(before)
-            turned = side / back  # the share in the frame of the one before, turned back: 0° is straight back
-            # How far its end stands from the share before, which runs from 0 to |before| along ``back`` here.
-            reach = min(max(turned.real, 0.0), abs(before))
-            onto = abs(turned - reach)
-            # A longer one running back past the share before's start covers it whole: how far that start stands
-            # from it.
-            along = min(max((abs(before) * turned.conjugate()).real / abs(turned) ** 2, 0.0), 1.0)
-            over = abs(abs(before) - along * turned)
-            if (abs(math.degrees(math.atan2(turned.imag, turned.real))) < FOLDED_BACK_DEG
-                    and min(onto, over) < FOLDED_ONTO_MM):
-                across = turned.imag
-                if abs(across) < ALONG_MM:
-                    start = mm(vector.start)
-                    across = -sum(((corner - start) / back).imag for corner in corners)
-                shifts[index] = back * 1j * math.copysign(BESIDE_MM, across if across else -1.0)
+            across = (side / back).imag
+            if abs(across) < ALONG_MM:
+                start = mm(vector.start)
+                across = -sum(((corner - start) / back).imag for corner in corners)
+            shifts[index] = back * 1j * math.copysign(BESIDE_MM, across if across else -1.0)
         before = side
     return shifts
+
+
+def _folds(before: complex, side: complex) -> bool:
+    """Whether a share ``side`` (mm) laid off after ``before`` turns back onto it: within :data:`FOLDED_BACK_DEG` of
+    straight back, its end within :data:`FOLDED_ONTO_MM` of ``before``, or running back past ``before``'s start
+    that close to it."""
+    back = -before / abs(before)
+    turned = side / back  # the share in the frame of the one before, turned back: 0° is straight back
+    # How far its end stands from the share before, which runs from 0 to |before| along ``back`` here.
+    reach = min(max(turned.real, 0.0), abs(before))
+    onto = abs(turned - reach)
+    # A longer one running back past the share before's start covers it whole: how far that start stands from it.
+    along = min(max((abs(before) * turned.conjugate()).real / abs(turned) ** 2, 0.0), 1.0)
+    over = abs(abs(before) - along * turned)
+    return abs(math.degrees(math.atan2(turned.imag, turned.real))) < FOLDED_BACK_DEG and min(onto, over) < FOLDED_ONTO_MM
 
 
 def _angle_radius(plane: CorrectionPlane, tail: complex, drawn: Sequence[Primitive]) -> float:
@@ -323,13 +452,16 @@ def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex, rad
 
 
 def _caption(plane: CorrectionPlane, scale: float | None, text: Mapping[str, str], placed: bool,
-             couple: float | None = None) -> tuple[str, ...]:
-    """The plane's caption lines; ``scale`` None for a polygon with nothing drawn, which has none; the ``couple`` a
-    one-plane balancing leaves last, where given."""
+             couple: float | None = None, apart: Sequence[tuple[str, Sequence[str]]] = ()) -> tuple[str, ...]:
+    """The plane's caption lines; ``scale`` None for a polygon with nothing drawn, which has none; for each vector
+    drawn ``apart`` from its place, why, with what it would cover there; the ``couple`` a one-plane balancing leaves
+    last, where given."""
     title = (text["bal_plane"].format(name=plane.name, position=_given(plane.position))
              if placed else text["bal_disc"].format(name=plane.name))
     lines = [title, *([] if scale is None else [text["bal_scale"].format(value=format_scale(scale))]), plane.equation,
              *_too_short(plane, scale, text),
+             *(text["bal_drawn_apart"].format(vector=vector, covered=", ".join(covered), offset=_given(BESIDE_MM))
+               for vector, covered in apart),
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
                                            value=significant(plane.mass_radius), angle=_angle(plane.angle_deg))]
     if plane.mass is not None and plane.radius is not None:
