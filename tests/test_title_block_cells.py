@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import itertools
 from xml.etree import ElementTree
 
 import pytest
@@ -149,3 +150,41 @@ def test_the_upside_down_designation_is_turned_in_the_svg(ratchet_sheets):
     group = next(element for element in root.iter() if element.get("id") == "sheet-designation")
     text, = [element for element in group.iter() if element.tag.endswith("text")]
     assert text.get("transform") == f"rotate(-180 {text.get('x')} {text.get('y')})"
+
+
+@pytest.mark.parametrize("locale", ["zh", "en", "ru"])
+def test_the_gb_change_header_s_names_keep_a_value_s_padding_from_their_cell_s_lines(locale):
+    """年、月、日 filled its 16 mm cell to 1 mm of the lines' middles, and of the block's thick line at 80 mm only
+    its ink's edge was left: each name of the row keeps the padding a value keeps, from its lines' edges.  The
+    lines are read off the block as drawn, the names measured as the block fits them (``text_width``)."""
+    from graphplan.render.primitives import text_width
+    from graphplan.render.title_block import PADDING, TitleBlockFields, labels, title_block
+
+    fields = TitleBlockFields(title="", drawing="", scale="", sheet=1, sheets=1)
+    items = title_block("gb", fields, labels(locale), (180.0, 0.0))
+    words = labels(locale)
+    header = [words[key] for key in ("gb_mark", "gb_places", "gb_zone", "gb_change_document", "gb_signature",
+                                     "gb_date")]
+    names = [item for item in items if isinstance(item, Text) and item.text in header and 28.0 < item.at[1] < 35.0]
+    assert sorted(name.text for name in names) == sorted(header)
+    for name in names:
+        y = name.at[1] + name.size / 2
+
+        lines = []  # (x, stroke width) of each line across the name's height
+        for item in items:
+            if isinstance(item, Polyline):
+                points = list(item.points) + ([item.points[0]] if item.closed else [])
+                lines += [(xa, item.stroke.width) for (xa, ya), (xb, yb) in itertools.pairwise(points)
+                          if xa == xb and min(ya, yb) <= y <= max(ya, yb)]
+        half = text_width(name.text, name.size) / 2
+        left = max((x, width) for x, width in lines if x < name.at[0])
+        right = min((x, width) for x, width in lines if x > name.at[0])
+        assert left[0] + left[1] / 2 + PADDING - 1e-9 <= name.at[0] - half, (name.text, left)
+        assert name.at[0] + half <= right[0] - right[1] / 2 - PADDING + 1e-9, (name.text, right)
+        # And above and below: the row's lines at 28 mm (thick) and 35 mm.
+        rows = [(ya, item.stroke.width) for item in items if isinstance(item, Polyline)
+                for (xa, ya), (xb, yb) in itertools.pairwise(item.points)
+                if ya == yb and min(xa, xb) < name.at[0] < max(xa, xb) and 27.0 < ya < 36.0]
+        bottom, top = min(rows), max(rows)
+        assert bottom[0] + bottom[1] / 2 + PADDING <= name.at[1] - 0.3 * name.size
+        assert name.at[1] + 1.15 * name.size <= top[0] - top[1] / 2 - PADDING + 1e-9

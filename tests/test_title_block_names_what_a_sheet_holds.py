@@ -9,12 +9,15 @@ one it would set below ISO 3098's smallest lettering gives way to the next.
 
 from __future__ import annotations
 
+import re
+
 import pytest
 from test_title_block_cells import printed_span
 
 from graphplan.locale import strings
-from graphplan.render.primitives import Text
+from graphplan.render.primitives import Text, text_width
 from graphplan.render.title_block import (
+    NAME_MARGIN,
     SMALLEST_LETTERING,
     TitleBlockFields,
     fitting_name,
@@ -80,4 +83,44 @@ def test_of_names_none_holds_legibly_the_largest_set_is_taken():
     words = labels("en")
     long = "Force analysis with friction, position 11, and everything else this sheet holds besides it"
     longer = long + " and more"
-    assert fitting_name("iso", [longer, long], words) == long
+    # Each tried in full and with its position's word shortened: the shorter wording of the shorter name is set
+    # largest.
+    assert fitting_name("iso", [longer, long], words) == long.replace("position 11", "pos. 11")
+
+
+def _position_names(locale: str, number: int) -> list[list[str]]:
+    """The names a force sheet's block is offered (:func:`graphplan.render.sheet._drawing_name`): a position's force
+    analysis, without and with friction, alone and beside the load diagrams, each followed by the kind's word."""
+    text = strings(locale)
+    shared = text["tb_sheet_with_load_diagrams"]
+    offered = []
+    for key in ("tb_sheet_forces_position", "tb_sheet_forces_friction_position"):
+        position = text[key].format(number=number)
+        offered.append([position, text["tb_sheet_forces"]])
+        offered.append([shared.format(name=position), shared.format(name=text["tb_sheet_forces"])])
+    return offered
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_position_is_named_on_one_line_with_its_number_inside_the_cell(locale):
+    """The Russian crank-rocker's last sheet broke «Силовой анализ, положение / 11; диаграммы нагрузок», and the
+    English one of the same page dropped the position: "Force analysis; load diagrams"."""
+    words = labels(locale)
+    word, short = words["position_word"], words["position_short"]
+    x0, _, x1, _ = DRAWING_CELLS[locale]
+    for names in _position_names(locale, 11):
+        chosen = fitting_name(form_of(locale), names, words)
+        lines = drawn_name(locale, chosen)
+        for line in lines:
+            # The line's extent as the block fits it (the renderer's measure of text), inside the cell by the
+            # margin the drawing's name keeps from its sides.
+            half = text_width(line.text, line.size) / 2
+            assert x0 + NAME_MARGIN - 1e-9 <= line.at[0] - half and line.at[0] + half <= x1 - NAME_MARGIN + 1e-9
+        if "11" in chosen:
+            # The number stands on the line of the word it counts, right after it.
+            (numbered,) = [line.text for line in lines if "11" in line.text]
+            assert re.search(rf"(?:{re.escape(word)}|{re.escape(short)}) 11", numbered), lines
+    # A position alone is named in every locale, and beside the load diagrams too where a shorter word holds it
+    # legibly (ISO 7200's one line of Document type set the English name in full at 1.77 mm).
+    for names in _position_names(locale, 11)[:2] + _position_names(locale, 11)[2:3]:
+        assert "11" in fitting_name(form_of(locale), names, words)

@@ -165,10 +165,24 @@ def fitting_name(form: str, names: Sequence[str], text: Mapping[str, str]) -> st
     the one it sets largest.
 
     A sheet that holds two kinds of drawing is named by both where its cell
-    holds the longer name legibly, else by the shorter names after it.
+    holds the longer name legibly, else by the shorter names after it; each
+    name is tried with its position's word shortened before the next.
     """
-    sizes = {name: drawing_size(form, name, text) for name in names}
-    return next((name for name in names if sizes[name] >= SMALLEST_LETTERING), max(names, key=sizes.__getitem__))
+    # Each name in full, then with the position's word shortened (pos. 11, пол. 11), before the next name: ISO 7200's
+    # one line of Document type set "Force analysis, position 11; load diagrams" at 1.77 mm, and the sheet was named
+    # by the kind's word alone, its position dropped.
+    tried = list(dict.fromkeys(way for name in names for way in (name, _shortened(name, text))))
+    sizes = {name: drawing_size(form, name, text) for name in tried}
+    return next((name for name in tried if sizes[name] >= SMALLEST_LETTERING), max(tried, key=sizes.__getitem__))
+
+
+def _shortened(name: str, text: Mapping[str, str]) -> str:
+    """``name`` with the locale's word for a position shortened where a number follows it ("position 11" →
+    "pos. 11")."""
+    word, short = text.get("position_word", ""), text.get("position_short", "")
+    if not word or not short:
+        return name
+    return re.sub(rf"(?<!\w){re.escape(word)}(?= \d)", lambda _: short, name)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -310,10 +324,11 @@ class _Block:
         self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), size, anchor,
                                  weight, lines, margin=margin))
 
-    def label(self, value: str, box: tuple[float, float, float, float], anchor: str = "middle") -> None:
+    def label(self, value: str, box: tuple[float, float, float, float], anchor: str = "middle",
+              padding: float = LABEL_PADDING) -> None:
         x0, y0, x1, y1 = box
         self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), LABEL_SIZE, anchor,
-                                 padding=LABEL_PADDING))
+                                 padding=padding))
 
     def corner_label(self, value: str, box: tuple[float, float, float, float]) -> None:
         """An ISO 7200 field's name, small in the top left corner of its field."""
@@ -399,10 +414,16 @@ def _gb(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> Non
     block.line(130.0, 0.0, 130.0, 56.0)
     block.rows(130.0, 180.0, (38.0, 20.0, 10.0), MAIN)
     header = 28.0
+    # The row's names fill their cells (年、月、日 and 更改文件号 take 14 of 16 mm), and its end cells stand against
+    # the block's thick lines: each name keeps a value's padding from its cell's lines' edges, not their middles,
+    # or 年、月、日 ran against the thick line at 80 mm.
+    edges = {0.0: MAIN, 80.0: MAIN}
     for key, (x0, x1) in (("gb_mark", (0.0, 10.0)), ("gb_places", (10.0, 20.0)), ("gb_zone", (20.0, 36.0)),
                           ("gb_change_document", (36.0, 52.0)), ("gb_signature", (52.0, 64.0)),
                           ("gb_date", (64.0, 80.0))):
-        block.label(text[key], (x0, header, x1, header + 7.0))
+        inner = (x0 + edges.get(x0, THIN).width / 2, header + MAIN.width / 2,
+                 x1 - edges.get(x1, THIN).width / 2, header + 7.0 - THIN.width / 2)
+        block.label(text[key], inner, padding=PADDING)
     signatures = (("gb_designed", 21.0, 0.0, fields.author), ("gb_standardized", 21.0, 40.0, ""),
                   ("gb_checked", 7.0, 0.0, fields.checked_by), ("gb_process", 0.0, 0.0, ""),
                   ("gb_approved", 0.0, 40.0, fields.approved_by))
@@ -467,7 +488,24 @@ _SPACES = re.compile(r"\s+")
 
 
 def _tokens(value: str, at_spaces: bool = False) -> list[tuple[str, bool]]:
-    """Words and ideographs of ``value`` (words alone ``at_spaces``), each with whether a space stands before it."""
+    """Words and ideographs of ``value`` (words alone ``at_spaces``), each with whether a space stands before it; a
+    number after a word kept with it (:func:`_numbers_kept`)."""
+    return _numbers_kept(_split(value, at_spaces))
+
+
+def _numbers_kept(tokens: list[tuple[str, bool]]) -> list[tuple[str, bool]]:
+    """``tokens`` with a number that follows a word after a space joined to that word: a line that ends
+    «Силовой анализ, положение» names no position, and the next that starts «11;» no more."""
+    kept: list[tuple[str, bool]] = []
+    for token, spaced in tokens:
+        if kept and spaced and token[0].isdigit() and kept[-1][0][-1].isalpha():
+            kept[-1] = (f"{kept[-1][0]} {token}", kept[-1][1])
+        else:
+            kept.append((token, spaced))
+    return kept
+
+
+def _split(value: str, at_spaces: bool) -> list[tuple[str, bool]]:
     if at_spaces:
         return [(word, k > 0) for k, word in enumerate(_SPACES.split(value.strip())) if word]
     tokens: list[tuple[str, bool]] = []
