@@ -3,17 +3,18 @@
 Each correction plane's polygon is drawn from its record
 (:class:`graphplan.rotor_balancing.CorrectionPlane`) as the student draws
 it: from the pole, the masses' mass-radius products (their shares in the
-plane) laid off head to tail at the plane's μ (in the masses' order, or, where
-that turns a share back onto the one before it, in the first order that does
-not: a sum is the same in any order, and the caption's equation is written in
-the order drawn) (kg·m per mm, the standard
+plane) laid off head to tail, in the masses' order or, where that turns a
+share back onto the one before it, in the first order that does not (a sum
+is the same in any order; the caption's equation is written in the order
+drawn), at the plane's μ (kg·m per mm, the standard
 scale that draws it about as large as the others: a plane near the masses'
 middle carries small shares and would shrink to a knot of labels at the
 other plane's scale), each named beside its
 middle; then the closing vector, the correction mb·rb, drawn thicker in
 red from the last tip back to the pole, with its angle θ measured from a
 dashed x-direction at its tail.  Under each polygon its caption: the plane,
-its scale, its vector equation, the correction's product, angle and mass, and under the one plane of a static
+its scale, its vector equation, any vector drawn beside the chain with what it would cover in its place, the
+correction's product, angle and mass, and under the one plane of a static
 balancing the couple Σ m·r·z it leaves.  The layout
 reads the record and computes no mechanics.  Every word and unit comes from
 ``text``, the ``bal_`` keys of a locale (:func:`graphplan.locale.strings`);
