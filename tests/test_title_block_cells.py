@@ -152,12 +152,64 @@ def test_the_upside_down_designation_is_turned_in_the_svg(ratchet_sheets):
     assert text.get("transform") == f"rotate(-180 {text.get('x')} {text.get('y')})"
 
 
+def _ink_beside(items, text):
+    """The inked edges (mm) of the nearest vertical lines left and right of ``text``, across its middle height."""
+    y = text.at[1] + text.size / 2
+    lines = []  # (x, stroke width) of each line across the text's height
+    for item in items:
+        if isinstance(item, Polyline):
+            points = list(item.points) + ([item.points[0]] if item.closed else [])
+            lines += [(xa, item.stroke.width) for (xa, ya), (xb, yb) in itertools.pairwise(points)
+                      if xa == xb and min(ya, yb) <= y <= max(ya, yb)]
+    left = max((x, width) for x, width in lines if x < text.at[0])
+    right = min((x, width) for x, width in lines if x > text.at[0])
+    return left[0] + left[1] / 2, right[0] - right[1] / 2
+
+
+def _extent(text):
+    """A text's left and right ends as the block fits it: ``text_width``, the renderer's measure of a text."""
+    from graphplan.render.primitives import text_width
+
+    width = text_width(text.text, text.size, text.weight)
+    x0 = text.at[0] - {"start": 0.0, "middle": width / 2, "end": width}[text.anchor]
+    return x0, x0 + width
+
+
+@pytest.mark.parametrize("locale", ["zh", "en", "ru"])
+def test_every_text_of_the_block_keeps_its_padding_from_the_ink_of_the_lines_beside_it(locale):
+    """«Разраб.», «Т.контр.» and ISO's field names stood 0.15 mm from the block's thick lines: a text's padding was
+    counted from a line's middle, and a thick line's half width, 0.35 mm, took most of a label's 0.5 mm.  The lines
+    are read off the block as drawn.  A name its padding would set below the smallest lettering («Изм.» in its
+    7 mm) gives up its padding instead, and stands at the smallest lettering clear of the ink."""
+    from graphplan.render.title_block import (
+        LABEL_PADDING,
+        SMALLEST_LETTERING,
+        TitleBlockFields,
+        form_of,
+        labels,
+        title_block,
+    )
+
+    fields = TitleBlockFields(title="Crank and slotted lever quick-return mechanism", author="A. Student",
+                              checked_by="Prof. B. Teacher", approved_by="C. Head", designation="TMM.CP.01.00.00",
+                              organization="University, group 21", date="2026-12-01",
+                              drawing="Силовой анализ, положение 11", scale="1:2.5", sheet=3, sheets=4,
+                              language=locale)
+    items = title_block(form_of(locale), fields, labels(locale), (200.0, 0.0))
+    texts = [item for item in items if isinstance(item, Text)]
+    assert len(texts) > 20
+    for text in texts:
+        left, right = _ink_beside(items, text)
+        x0, x1 = _extent(text)
+        # (A value too long for its box is set smaller, and warned of (``cramped``), but keeps its padding.)
+        padding = 0.0 if text.size == SMALLEST_LETTERING else LABEL_PADDING
+        assert left + padding - 1e-9 <= x0 and x1 <= right - padding + 1e-9, (text.text, left, x0, x1, right)
+
+
 @pytest.mark.parametrize("locale", ["zh", "en", "ru"])
 def test_the_gb_change_header_s_names_keep_a_value_s_padding_from_their_cell_s_lines(locale):
     """年、月、日 filled its 16 mm cell to 1 mm of the lines' middles, and of the block's thick line at 80 mm only
-    its ink's edge was left: each name of the row keeps the padding a value keeps, from its lines' edges.  The
-    lines are read off the block as drawn, the names measured as the block fits them (``text_width``)."""
-    from graphplan.render.primitives import text_width
+    0.7 mm of paper was left: each name of the row keeps the padding a value keeps, from its lines' inked edges."""
     from graphplan.render.title_block import PADDING, TitleBlockFields, labels, title_block
 
     fields = TitleBlockFields(title="", drawing="", scale="", sheet=1, sheets=1)
@@ -168,19 +220,9 @@ def test_the_gb_change_header_s_names_keep_a_value_s_padding_from_their_cell_s_l
     names = [item for item in items if isinstance(item, Text) and item.text in header and 28.0 < item.at[1] < 35.0]
     assert sorted(name.text for name in names) == sorted(header)
     for name in names:
-        y = name.at[1] + name.size / 2
-
-        lines = []  # (x, stroke width) of each line across the name's height
-        for item in items:
-            if isinstance(item, Polyline):
-                points = list(item.points) + ([item.points[0]] if item.closed else [])
-                lines += [(xa, item.stroke.width) for (xa, ya), (xb, yb) in itertools.pairwise(points)
-                          if xa == xb and min(ya, yb) <= y <= max(ya, yb)]
-        half = text_width(name.text, name.size) / 2
-        left = max((x, width) for x, width in lines if x < name.at[0])
-        right = min((x, width) for x, width in lines if x > name.at[0])
-        assert left[0] + left[1] / 2 + PADDING - 1e-9 <= name.at[0] - half, (name.text, left)
-        assert name.at[0] + half <= right[0] - right[1] / 2 - PADDING + 1e-9, (name.text, right)
+        left, right = _ink_beside(items, name)
+        x0, x1 = _extent(name)
+        assert left + PADDING - 1e-9 <= x0 and x1 <= right - PADDING + 1e-9, (name.text, left, x0, x1, right)
         # And above and below: the row's lines at 28 mm (thick) and 35 mm.
         rows = [(ya, item.stroke.width) for item in items if isinstance(item, Polyline)
                 for (xa, ya), (xb, yb) in itertools.pairwise(item.points)

@@ -300,14 +300,33 @@ def corner_box(form: str, designation: str, corner: tuple[float, float, float, f
 
 
 class _Block:
-    """A title block under construction, in coordinates from its lower left corner."""
+    """A title block under construction, in coordinates from its lower left corner.
+
+    Its lines are drawn before its texts, and each text keeps its padding from the inked edge of the lines beside
+    its box (:meth:`inner`), not from their middles: a thick line's half width, 0.35 mm, ate a label's 0.5 mm
+    padding, and «Изм.», «Разраб.», 年、月、日 stood against the block's thick lines.  (Above and below, a line of
+    text has its descenders' room to spare: a sheet's number kept its size.)"""
 
     def __init__(self, x: float, y: float) -> None:
         self.x, self.y = x, y
         self.items: list[Primitive] = []
+        # Each line drawn, (x0, y0, x1, y1, stroke width) from the block's corner: what a text's box is inside of.
+        self.lines: list[tuple[float, float, float, float, float]] = []
 
     def line(self, x0: float, y0: float, x1: float, y1: float, stroke: Stroke = MAIN) -> None:
         self.items.append(Polyline(((self.x + x0, self.y + y0), (self.x + x1, self.y + y1)), stroke))
+        self.lines.append((x0, y0, x1, y1, stroke.width))
+
+    def inner(self, box: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
+        """``box`` less half the width of the widest line drawn along its left side and along its right."""
+        x0, y0, x1, y1 = box
+
+        def half(at: float) -> float:
+            widths = [width for ax, ay, bx, by, width in self.lines
+                      if abs(ax - at) < 1e-9 and abs(bx - at) < 1e-9 and min(ay, by) < y1 and max(ay, by) > y0]
+            return max(widths, default=0.0) / 2
+
+        return x0 + half(x0), y0, x1 - half(x1), y1
 
     def rows(self, x0: float, x1: float, ys: Sequence[float], stroke: Stroke = THIN) -> None:
         for y in ys:
@@ -316,23 +335,34 @@ class _Block:
     def outline(self, width: float, height: float) -> None:
         self.items.append(Polyline(((self.x, self.y), (self.x + width, self.y), (self.x + width, self.y + height),
                                     (self.x, self.y + height)), MAIN, closed=True))
+        self.lines += [(0.0, 0.0, width, 0.0, MAIN.width), (width, 0.0, width, height, MAIN.width),
+                       (0.0, height, width, height, MAIN.width), (0.0, 0.0, 0.0, height, MAIN.width)]
 
     def text(self, value: str, box: tuple[float, float, float, float], size: float = VALUE_SIZE,
              anchor: str = "middle", weight: str = "normal", lines: int = 1, margin: float | None = None) -> None:
-        """``value`` fitted into ``box`` (x0, y0, x1, y1 from the block's corner), ``margin`` mm from its sides."""
-        x0, y0, x1, y1 = box
+        """``value`` fitted into ``box`` (x0, y0, x1, y1 from the block's corner), ``margin`` mm from its sides (whose
+        2 mm, counted from the lines' middles, leave the paper :data:`NAME_MARGIN` says), else a padding from the
+        lines' ink."""
+        x0, y0, x1, y1 = self.inner(box) if margin is None else box
         self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), size, anchor,
                                  weight, lines, margin=margin))
 
     def label(self, value: str, box: tuple[float, float, float, float], anchor: str = "middle",
               padding: float = LABEL_PADDING) -> None:
-        x0, y0, x1, y1 = box
-        self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), LABEL_SIZE, anchor,
-                                 padding=padding))
+        x0, y0, x1, y1 = self.inner(box)
+        at = (self.x + x0, self.y + y0, self.x + x1, self.y + y1)
+        texts = fitted(value, at, LABEL_SIZE, anchor, padding=padding)
+        if texts and min(text.size for text in texts) < SMALLEST_LETTERING:
+            # A name its padding would set below the smallest lettering gives up its padding first, as far as it
+            # must and the ink allows: ESKD's «Изм.» in its 7 mm between two thick lines.
+            room = (x1 - x0 - text_width(value, SMALLEST_LETTERING)) / 2 - 1e-6
+            if room >= 0:
+                texts = fitted(value, at, LABEL_SIZE, anchor, padding=min(padding, room))
+        self.items.extend(texts)
 
     def corner_label(self, value: str, box: tuple[float, float, float, float]) -> None:
         """An ISO 7200 field's name, small in the top left corner of its field."""
-        x0, _, x1, y1 = box
+        x0, _, x1, y1 = self.inner(box)
         size = min(CORNER_LABEL_SIZE, CORNER_LABEL_SIZE * (x1 - x0 - 2 * LABEL_PADDING)
                    / text_width(value, CORNER_LABEL_SIZE))
         self.items.append(Text((self.x + x0 + LABEL_PADDING, self.y + y1 - LABEL_PADDING - 1.15 * size), value,
@@ -414,16 +444,12 @@ def _gb(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> Non
     block.line(130.0, 0.0, 130.0, 56.0)
     block.rows(130.0, 180.0, (38.0, 20.0, 10.0), MAIN)
     header = 28.0
-    # The row's names fill their cells (年、月、日 and 更改文件号 take 14 of 16 mm), and its end cells stand against
-    # the block's thick lines: each name keeps a value's padding from its cell's lines' edges, not their middles,
-    # or 年、月、日 ran against the thick line at 80 mm.
-    edges = {0.0: MAIN, 80.0: MAIN}
+    # The row's names fill their cells (年、月、日 and 更改文件号 take 14 of 16 mm): each keeps a value's padding from
+    # its cell's lines, as the values do, or 年、月、日 ran against the thick line at 80 mm.
     for key, (x0, x1) in (("gb_mark", (0.0, 10.0)), ("gb_places", (10.0, 20.0)), ("gb_zone", (20.0, 36.0)),
                           ("gb_change_document", (36.0, 52.0)), ("gb_signature", (52.0, 64.0)),
                           ("gb_date", (64.0, 80.0))):
-        inner = (x0 + edges.get(x0, THIN).width / 2, header + MAIN.width / 2,
-                 x1 - edges.get(x1, THIN).width / 2, header + 7.0 - THIN.width / 2)
-        block.label(text[key], inner, padding=PADDING)
+        block.label(text[key], (x0, header, x1, header + 7.0), padding=PADDING)
     signatures = (("gb_designed", 21.0, 0.0, fields.author), ("gb_standardized", 21.0, 40.0, ""),
                   ("gb_checked", 7.0, 0.0, fields.checked_by), ("gb_process", 0.0, 0.0, ""),
                   ("gb_approved", 0.0, 40.0, fields.approved_by))
