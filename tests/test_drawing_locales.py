@@ -239,9 +239,11 @@ def test_every_key_the_drawings_look_up_is_in_the_locale_file_itself(monkeypatch
 
 def test_every_key_of_the_drawings_prefixes_is_drawn():
     english = strings("en")
-    # Named by render/sheet.py for the block's drawing name, not by a form.
+    # Named by render/sheet.py for the block's drawing name, not by a form; a position's word and its shorter one
+    # are what title_block.fitting_name shortens such a name by.
     by_the_sheets = {"tb_sheet_forces", "tb_sheet_forces_position", "tb_sheet_forces_friction_position",
-                     "tb_sheet_with_load_diagrams", "tb_sheet_dynamics", "tb_sheet_balancing"}
+                     "tb_sheet_with_load_diagrams", "tb_sheet_dynamics", "tb_sheet_balancing",
+                     "tb_position_word", "tb_position_short"}
     for kind, prefix in PREFIXES.items():
         keys = {key for key in english if key.startswith(prefix)}
         marked = {key: f"[[{key}]]{value}" for key, value in english.items() if key.startswith(prefix)}
