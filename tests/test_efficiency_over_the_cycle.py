@@ -178,8 +178,8 @@ def test_a_mechanism_that_locks_on_the_way_has_no_efficiency_over_the_cycle(tmp_
 def test_results_forces_md_and_the_note_give_the_efficiency_over_the_cycle_in_each_language(tmp_path):
     useful, driving = PUSH * 2.0 * RADIUS, working_stroke_integral(pressing_moment)
     eta = force_report.number(useful / driving, 4)
-    said = {"en": f"η = Au/Ad = {eta}", "ru": f"КПД за цикл η = Aпс/Aдв = {eta.replace('.', ',')}",
-            "zh": f"一个运动循环的机械效率 η = Wr/Wd = {eta}"}
+    said = {"en": f"η = Au/Ab = {eta}", "ru": f"КПД за цикл η = Aпс/Aдв = {eta.replace('.', ',')}",
+            "zh": f"一个运动循环的机械效率 η = Wr/Wb = {eta}"}
     for locale, words in said.items():
         scene = tmp_path / f"{locale}.toml"
         scene.write_text(scene_text(PRESSING, locale=locale), encoding="utf-8")
@@ -187,7 +187,7 @@ def test_results_forces_md_and_the_note_give_the_efficiency_over_the_cycle_in_ea
         assert main(["run", str(scene), "--out", str(out), "--only", "forces,note"]) == 0
         assert words in (out / "forces.md").read_text(encoding="utf-8")
         assert words in (out / "note.md").read_text(encoding="utf-8")
-        works = {"en": ("A", "u", "d", "f"), "ru": ("A", "пс", "дв", "тр"), "zh": ("W", "r", "d", "f")}[locale]
+        works = {"en": ("A", "u", "b", "f"), "ru": ("A", "пс", "дв", "тр"), "zh": ("W", "r", "b", "f")}[locale]
         html = (out / "note.html").read_text(encoding="utf-8")
         assert all(f"{works[0]}<sub>{index}</sub> = " in html for index in works[1:])
     written = results(analyse(scene_from_text(scene_text(PRESSING))))["cycle_efficiency"]

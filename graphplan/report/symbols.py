@@ -63,8 +63,8 @@ SYMBOL = re.compile(
     rf"|(?P<base21>f′?|ρ)(?P<index21>{_POINTS}|\d+)"
     # The machine's dynamics: ΔWmax, Ad and Ar (in Chinese Wd and Wr), ωm, ωmax and ωmin, vS of a reduction; in
     # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).  The efficiency over the cycle's
-    # works: Au, Ad, Af (Wr, Wd, Wf; Aпс, Aдв, Aтр).
-    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>[AW])(?P<index14>[dfru]|[дс]|пс|дв|тр)"
+    # works: Au, Ab (the driver's, with friction), Af (Wr, Wb, Wf; Aпс, Aдв, Aтр).
+    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>[AW])(?P<index14>[bdfru]|[дс]|пс|дв|тр)"
     r"|(?P<base15>ω)(?P<index15>max|min|m|ср)|(?P<base16>v)(?P<index16>S)"
     # The motor: its rated (MN, ωN, sN; Mн, ωн, sн), breakdown (Mmax; Mк) and critical (sk, sm; sк) values, its
     # synchronous and own speeds (ωs; ωдв, ωmot), its rotor (Jrot; Jрот); a clutch's driving half (Jcl, Mcl, ωd;
