@@ -93,8 +93,10 @@ def test_a_sheet_of_a_force_analysis_and_the_load_diagrams_names_both(tmp_path, 
     position = text[key].format(number=whole.rsplit("-", 1)[1])
     full, short = (text["tb_sheet_with_load_diagrams"].format(name=name) for name in (position, text["tb_sheet_forces"]))
     # ESKD's name cell holds the Russian name with the position in two lines, GB/T's the Chinese in one; ISO's one
-    # line of Document type holds the English one only below the smallest lettering, so the kind's word stands.
-    named = short if form_of(locale) == "iso" else full
+    # line of Document type holds the English one only below the smallest lettering, so the force analysis's name
+    # stands alone, keeping the position (and the friction) that the kind's word with the load diagrams dropped.
+    named = position if form_of(locale) == "iso" else full
+    assert short not in " ".join(title_block_texts(shared))
     assert named in " ".join(title_block_texts(shared))
     root = ElementTree.parse(shared).getroot()
     (block,) = [group for group in root.iter(f"{SVG}g") if group.get("id") == "title-block"]

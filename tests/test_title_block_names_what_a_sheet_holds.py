@@ -46,10 +46,12 @@ def drawn_name(locale: str, name: str) -> list[Text]:
 
 
 def candidates(locale: str, number: int) -> list[str]:
+    """The names :func:`graphplan.render.sheet._drawing_name` offers a sheet of a position's force analysis with
+    friction beside the load diagrams: both, the force analysis alone, the kind's word and the load diagrams."""
     text = strings(locale)
     shared = text["tb_sheet_with_load_diagrams"]
-    return [shared.format(name=text["tb_sheet_forces_friction_position"].format(number=number)),
-            shared.format(name=text["tb_sheet_forces"])]
+    position = text["tb_sheet_forces_friction_position"].format(number=number)
+    return [shared.format(name=position), position, shared.format(name=text["tb_sheet_forces"])]
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
@@ -74,7 +76,8 @@ def test_the_name_chosen_is_legible_and_inside_its_cell(locale):
 def test_the_longer_name_is_taken_where_it_fits():
     # ESKD's cell holds the Russian name in two lines at 2.1 mm (8 mm less 0.8 mm above and below, over the three
     # cap heights two lines take: 6.4 / 3); ISO's one line of 56 mm does not hold the English one at 1.8 mm
-    # (56 characters, some 0.6 cap height wide each).
+    # (56 characters, some 0.6 cap height wide each), but holds the force analysis's name alone, which keeps the
+    # friction and the position that tell the sheet from the others.
     assert fitting_name("eskd", candidates("ru", 11), labels("ru")) == candidates("ru", 11)[0]
     assert fitting_name("iso", candidates("en", 11), labels("en")) == candidates("en", 11)[1]
 
@@ -97,7 +100,7 @@ def _position_names(locale: str, number: int) -> list[list[str]]:
     for key in ("tb_sheet_forces_position", "tb_sheet_forces_friction_position"):
         position = text[key].format(number=number)
         offered.append([position, text["tb_sheet_forces"]])
-        offered.append([shared.format(name=position), shared.format(name=text["tb_sheet_forces"])])
+        offered.append([shared.format(name=position), position, shared.format(name=text["tb_sheet_forces"])])
     return offered
 
 
@@ -120,7 +123,8 @@ def test_a_position_is_named_on_one_line_with_its_number_inside_the_cell(locale)
             # The number stands on the line of the word it counts, right after it.
             (numbered,) = [line.text for line in lines if "11" in line.text]
             assert re.search(rf"(?:{re.escape(word)}|{re.escape(short)}) 11", numbered), lines
-    # A position alone is named in every locale, and beside the load diagrams too where a shorter word holds it
-    # legibly (ISO 7200's one line of Document type set the English name in full at 1.77 mm).
-    for names in _position_names(locale, 11)[:2] + _position_names(locale, 11)[2:3]:
+    # The position is named in every locale, alone and beside the load diagrams, with friction too (ISO 7200's one
+    # line of Document type set the English name in full at 1.77 mm, and with friction at 1.46 mm even with the
+    # position's word shortened).
+    for names in _position_names(locale, 11):
         assert "11" in fitting_name(form_of(locale), names, words)

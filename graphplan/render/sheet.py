@@ -1560,9 +1560,12 @@ def _drawing_name(page: Page, kind: str = "", form: str = "", words: Mapping[str
     sharing, shared_name = _SHARING_PANELS.get(kind, ("", ""))
     if words is None or not sharing or not any(panel.name.startswith(sharing) for panel, _, _ in page.placed):
         return named
-    # Named by both where the cell holds that legibly, else by the kind's word and the other drawings.
-    both = [words[shared_name].format(name=name) for name in (named, words[kind]) if name]
-    return fitting_name(form, both, words)
+    # Named by both where the cell holds that legibly, else by the force analysis alone, else by the kind's word and
+    # the other drawings: ISO's one line set "Force analysis with friction, pos. 11; load diagrams" at 1.46 mm, and
+    # the sheet named by the kind's word lost both the friction and the position that tell it from the others.
+    ways = [words[shared_name].format(name=named), named] if named else []
+    ways.append(words[shared_name].format(name=words[kind]))
+    return fitting_name(form, ways, words)
 
 
 def _unframed(panel: Panel, number: int, count: int) -> Sheet:
