@@ -258,12 +258,83 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
         panels.append(velocity_plans_panel(analysis))
     for position in analysis.plans:
         sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
-        row, *others = (_plans_at_no_length_scale(split(arrangement, f"plan-{position.number}",
+        row, *others = (_plans_at_no_length_scale(split(_on_their_captions(arrangement), f"plan-{position.number}",
                                                         text["plan_sheet_title"].format(number=position.number)))
-                        for arrangement in plan_layout.arrangements(sheet, tuple(plan_layout.SHAPES)))
+                        for arrangement in _arranged_naming_position(sheet, text))
         # In the force sheets' words: one "continued" for every drawing that goes on onto another sheet.
         panels.append(_headed(replace(row, alternatives=tuple(others)), text["force_sheet_continued"]))
     return panels
+
+
+# The plans' captions, by field, and the words that name their position on a course sheet.
+_NAMED_CAPTIONS = {"velocity": ("velocity_caption", "velocity_plan_caption"),
+                   "acceleration": ("acceleration_caption", "acceleration_plan_caption")}
+
+
+def _arranged_naming_position(sheet: plan_layout.PlanSheet, text: Mapping[str, str]) -> list[Arrangement]:
+    """``sheet`` in each of its shapes (:data:`~graphplan.render.plans.SHAPES`), its plans' captions naming its
+    position, as its mechanism's does.
+
+    On a course sheet another position's drawings stand beside these, and
+    the plan sheet's heading is over its first drawing only: the plans of
+    position 4 at the foot of the slotted lever's sheet stood level with the
+    caption of position 11's mechanism and read as that position's.  A
+    caption that would reach past the drawing's edge, where the shorter one
+    did not, is broken to the room the shorter one left: the Russian
+    crank-rocker's row, 15 mm wider for «План ускорений, положение 11», no
+    longer fitted an A3 and took two sheets a position.
+    """
+    shapes = tuple(plan_layout.SHAPES)
+    bare = plan_layout.arrangements(sheet, shapes)
+    named_lines = {field: text[key].format(number=sheet.number) for field, (_, key) in _NAMED_CAPTIONS.items()}
+    arranged = []
+    for shape, unnamed in zip(shapes, bare, strict=True):
+        left, _, right, _ = bounds(unnamed.layers)
+        captions, broken = {}, {}
+        for field, (attribute, _) in _NAMED_CAPTIONS.items():
+            if field not in unnamed.fields:
+                continue
+            x0, _, x1, _ = unnamed.fields[field]
+            # As wide as the caption may be, centred under its field, within the drawing's bounds as they were.
+            room = 2 * min((x0 + x1) / 2 - left, right - (x0 + x1) / 2)
+            line = named_lines[field]
+            lines = tuple(fitted(line, room, plan_layout.CAPTION_SIZE, "bold")) \
+                if text_width(line, plan_layout.CAPTION_SIZE, "bold") > room + 1e-6 else (line,)
+            captions[attribute] = (*lines, *getattr(sheet, attribute)[1:])
+            broken[f"{field}-caption"] = len(lines)
+        laid = plan_layout.arrangements(replace(sheet, **captions), (shape,))[0]
+        # A caption sets its first line in bold, the drawing's name: the name's every line, where it is broken.
+        arranged.append(replace(laid, layers=[
+            replace(layer, items=tuple(replace(item, weight="bold") if k < broken[layer.name] else item
+                                       for k, item in enumerate(layer.items)))
+            if broken.get(layer.name, 1) > 1 else layer for layer in laid.layers]))
+    return arranged
+
+
+def _on_their_captions(arrangement: Arrangement) -> Arrangement:
+    """``arrangement`` with each drawing lowered to the foot of its field, just over its caption.
+
+    A field is as tall as the tallest drawing of its row (the mechanism's
+    beside both plans, as tall as the two): the drawing stood in its middle
+    and its caption under the field, 130 mm under the slotted lever's
+    mechanism, level with the plans of another position beside it.  At the
+    foot, the captions of a row still share a line.
+    """
+    keys = sorted(arrangement.fields, key=len, reverse=True)
+
+    def owner(layer: Layer) -> str | None:
+        return next((key for key in keys if layer.name == key or layer.name.startswith(key + "-")), None)
+
+    drops: dict[str, float] = {}
+    for key, (_, field_bottom, _, _) in arrangement.fields.items():
+        drawing = [layer for layer in arrangement.layers
+                   if owner(layer) == key and layer.name != f"{key}-caption" and layer.items]
+        if drawing:
+            drops[key] = field_bottom - bounds(drawing)[1]
+    layers = [moved_layers([layer], 0.0, drops[key])[0]
+              if (key := owner(layer)) in drops and layer.name != f"{key}-caption" else layer
+              for layer in arrangement.layers]
+    return replace(arrangement, layers=layers)
 
 
 def _plans_at_no_length_scale(panel: Panel) -> Panel:
