@@ -31,7 +31,7 @@ CAPTION_KEYS = {"mechanism": "mechanism_title", "velocity": "velocity_plan_capti
                 "acceleration": "acceleration_plan_caption"}
 
 CASES = [*((f"new:{kind}", "en", None) for kind in ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad")),
-         ("new:crank-rocker", "ru", None),
+         ("new:crank-rocker", "ru", None), ("new:slotted-lever", "zh", None),
          *((path.name, "en", None) for path in sorted(FIXTURES.glob("*.toml"))),
          ("quick_return_slotted_lever.toml", "en", "A3"),
          ("quick_return_slotted_lever.toml", "ru", "A3")]

@@ -51,7 +51,6 @@ from .drawings import (
     length_scale,
     paths_extent,
     plan_sheet,
-    plan_size,
     positions_plan,
     velocity_plans_drawing,
     with_length_scale,
@@ -258,12 +257,57 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
         panels.append(velocity_plans_panel(analysis))
     for position in analysis.plans:
         sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
-        row, *others = (_plans_at_no_length_scale(split(_on_their_captions(arrangement), f"plan-{position.number}",
-                                                        text["plan_sheet_title"].format(number=position.number)))
-                        for arrangement in _arranged_naming_position(sheet, text))
+        row, *others = _plan_sheet_ways(sheet, text)
         # In the force sheets' words: one "continued" for every drawing that goes on onto another sheet.
         panels.append(_headed(replace(row, alternatives=tuple(others)), text["force_sheet_continued"]))
     return panels
+
+
+def _plan_sheet_ways(sheet: plan_layout.PlanSheet, text: Mapping[str, str],
+                     shapes: Sequence[str] = tuple(plan_layout.SHAPES)) -> list[Panel]:
+    """The plan sheet as a panel in each of ``shapes``, its captions naming its position, its plans standing apart
+    each in the ways its caption may read (:func:`_plans_captioned_apart`)."""
+    label = text["plan_sheet_title"].format(number=sheet.number)
+    return [_plans_at_no_length_scale(_plans_captioned_apart(
+        split(_on_their_captions(arrangement), f"plan-{sheet.number}", label), sheet, text))
+        for arrangement in _arranged_naming_position(sheet, text, shapes)]
+
+
+def _plans_captioned_apart(panel: Panel, sheet: plan_layout.PlanSheet, text: Mapping[str, str]) -> Panel:
+    """``panel`` with each plan among its parts in the ways its caption naming its position may read: broken to
+    the width the plan took with its unnamed caption where one line is wider, then on one line.
+
+    A part apart takes its caption's width: the Russian class III triad's
+    velocity plan, 98 mm wide, took 127 under «План скоростей, положение 8»,
+    and its plan sheet, three parts on one A3, went over two.
+    """
+    parts = []
+    for part in panel.parts:
+        field = part.name.rsplit("-", 1)[-1]
+        caption = next((layer for layer in part.layers if layer.name == "caption" and layer.items), None)
+        if field not in _NAMED_CAPTIONS or caption is None or not isinstance(caption.items[0], Text):
+            parts.append(part)
+            continue
+        attribute, key = _NAMED_CAPTIONS[field]
+        name, rest = text[key].format(number=sheet.number), getattr(sheet, attribute)[1:]
+        x0, _, x1, _ = bounds([layer for layer in part.layers if layer.name != "caption"])
+        room = max(x1 - x0, *(text_width(line, plan_layout.CAPTION_SIZE, "bold" if k == 0 else "normal")
+                              for k, line in enumerate(getattr(sheet, attribute))))
+
+        def captioned(lines: Sequence[str], part: Panel = part, at: tuple[float, float] = caption.items[0].at,
+                      rest: Sequence[str] = rest) -> Panel:
+            texts = tuple(replace(item, weight="bold") if k < len(lines) else item
+                          for k, item in enumerate(plan_layout.caption_texts((*lines, *rest), at)))
+            return replace(part, layers=tuple(Layer("caption", texts) if layer.name == "caption" else layer
+                                              for layer in part.layers))
+
+        ways = [captioned((name,))]
+        if text_width(name, plan_layout.CAPTION_SIZE, "bold") > room + 1e-6:
+            # Broken first: a part is placed in the first of its ways a sheet holds, and on one line it left no room
+            # for the part after it.  On one line where only that fits, a line lower.
+            ways.insert(0, captioned(fitted(name, room, plan_layout.CAPTION_SIZE, "bold")))
+        parts.append(replace(ways[0], alternatives=tuple(ways[1:])))
+    return replace(panel, parts=tuple(parts))
 
 
 # The plans' captions, by field, and the words that name their position on a course sheet.
@@ -271,7 +315,8 @@ _NAMED_CAPTIONS = {"velocity": ("velocity_caption", "velocity_plan_caption"),
                    "acceleration": ("acceleration_caption", "acceleration_plan_caption")}
 
 
-def _arranged_naming_position(sheet: plan_layout.PlanSheet, text: Mapping[str, str]) -> list[Arrangement]:
+def _arranged_naming_position(sheet: plan_layout.PlanSheet, text: Mapping[str, str],
+                              shapes: Sequence[str] = tuple(plan_layout.SHAPES)) -> list[Arrangement]:
     """``sheet`` in each of its shapes (:data:`~graphplan.render.plans.SHAPES`), its plans' captions naming its
     position, as its mechanism's does.
 
@@ -284,7 +329,6 @@ def _arranged_naming_position(sheet: plan_layout.PlanSheet, text: Mapping[str, s
     crank-rocker's row, 15 mm wider for «План ускорений, положение 11», no
     longer fitted an A3 and took two sheets a position.
     """
-    shapes = tuple(plan_layout.SHAPES)
     bare = plan_layout.arrangements(sheet, shapes)
     named_lines = {field: text[key].format(number=sheet.number) for field, (_, key) in _NAMED_CAPTIONS.items()}
     arranged = []
@@ -1446,7 +1490,8 @@ def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel])
     too_big = [(position, kind, part) for position in analysis.plans
                for part in getattr(plan_panels.get(f"plan-{position.number}"), "parts", ())
                for kind in [part.name.rsplit("-", 1)[-1]]
-               if kind in ("velocity", "acceleration") and not holds(sheet, form, width(part), height(part), True)]
+               if kind in ("velocity", "acceleration")
+               and not any(holds(sheet, form, width(way), height(way), True) for way in part.ways)]
     if not too_big:
         return None
     settings, fixes = [], []
@@ -1517,7 +1562,7 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
     pole, given_scale = getattr(drawing, f"{kind}_pole"), getattr(drawing, f"{kind}_scale")
 
     def fits(position: PlanPosition, scale: float) -> bool:
-        return holds(sheet, form, *plan_size(analysis, position, kind, scale), True)
+        return any(holds(sheet, form, *size, True) for size in _plan_part_sizes(analysis, position, kind, scale))
 
     if given_scale is not None:
         scale = standard_scale(given_scale)
@@ -1548,6 +1593,21 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
             fitting, too_long = (middle, too_long) if fits(position, pa / middle) else (fitting, middle)
         too_long = fitting + 1
     return setting, f"drawing.{kind}_pole = {too_long - 1} (or less)"
+
+
+def _plan_part_sizes(analysis: Analysis, position: PlanPosition, kind: str,
+                     scale: float) -> list[tuple[float, float]]:
+    """The width and height (mm) of the velocity or acceleration plan (``kind``) of a plan sheet standing apart on
+    a course sheet, in each way it may stand, drawn at the plan scale ``scale`` instead of its own: with its
+    caption as the sheet sets it, naming its position (:func:`_plans_captioned_apart`).  Measured with the plan
+    sheet's own caption, the pole distance a refusal offered the quick-return's acceleration plan on an A4 left it
+    6 mm too tall there."""
+    plans_at = {"velocity": position.velocity, "acceleration": position.acceleration}
+    plans_at[kind] = replace(plans_at[kind], scale=scale)
+    sheet = plan_sheet(analysis, position.index, **plans_at)
+    row = _plan_sheet_ways(sheet, strings(analysis.scene.locale), ("row",))[0]
+    part = next(part for part in row.parts if part.name.endswith(f"-{kind}"))
+    return [(width(way), height(way)) for way in part.ways]
 
 
 def _sheets(drawings: Sequence[Panel | Sequence[Layer]], sheet: str, locale: str, kind: str, title: str,
