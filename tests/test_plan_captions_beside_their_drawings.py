@@ -19,7 +19,7 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.locale import strings
 from graphplan.render.drawings import with_length_scale
-from graphplan.render.plans import CAPTION_GAP_MM
+from graphplan.render.plans import CAPTION_GAP_MM, GAP_MM
 from graphplan.render.primitives import Text, bounds
 from graphplan.render.sheet import kinematics_panels, kinematics_sheet
 from graphplan.starters import starter
@@ -94,3 +94,20 @@ def test_each_caption_names_its_position_under_its_own_drawing(name, locale, she
     # Every drawing of every plan position is captioned somewhere in the set.
     assert seen == {(position.number, field) for position in analysis.plans
                     for field in ("mechanism", "velocity", "acceleration")}
+
+
+@pytest.mark.parametrize(("name", "locale"), [("new:slotted-lever", "en"), ("new:crank-rocker", "ru"),
+                                              ("new:crank-rocker", "en"), ("new:triad", "en")])
+def test_two_positions_plan_sheets_stand_further_apart_than_the_drawings_of_one(name, locale):
+    """Each position's mechanism and plans read as one block: two positions' plan sheets on one sheet are further
+    apart than the drawings inside one (at 15 mm, against their 25, position 4's plans read as position 11's)."""
+    analysis = with_length_scale(analyse(scene_of(name, locale)))
+    sheets = kinematics_sheet(kinematics_panels(analysis), analysis.scene.drawing.sheet, locale)
+    pairs = 0
+    for sheet in sheets:
+        blocks = [rect for panel, rect in sheet.panels.items() if re.fullmatch(r"plan-\d+", panel)]
+        for k, first in enumerate(blocks):
+            for second in blocks[k + 1:]:
+                pairs += 1
+                assert distance(first, second) > GAP_MM, (sheet.number, first, second)
+    assert pairs, "no sheet holds two positions' plan sheets: the test tests nothing"

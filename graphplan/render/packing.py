@@ -4,7 +4,8 @@ The drawings come as :class:`Panel` s, each at its own scale factors: a
 panel is never scaled, since μl, μV, μa and μF are written beside it and a
 shrunken drawing would falsify them.  Panels are placed in the order given,
 each where the drawings of the sheet stay most compact (then as high and
-as far left as can be), never nearer than :data:`GAP_MM` to another or
+as far left as can be), never nearer than :data:`GAP_MM` to another (the
+plan sheets of two positions :data:`BETWEEN_POSITIONS_MM`, so that each reads as one block) or
 than :data:`PADDING_MM` to the frame, the title block and ESKD's графа 26; the drawings of
 a sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
@@ -44,6 +45,10 @@ from .primitives import Layer, bounds
 
 # Space between two drawings (mm).
 GAP_MM = 15.0
+# Space between the plan sheets of two positions (mm): wider than between the drawings of one
+# (:data:`graphplan.render.plans.GAP_MM`, 25 mm), so that each position's mechanism and plans read as one block.  At
+# 15 mm, the plans of position 4 stood nearer to the mechanism of position 11 beside them than to their own.
+BETWEEN_POSITIONS_MM = 35.0
 # A free strip of an empty sheet narrower than this (mm) is no room a refusal offers.
 _LEAST_ROOM_MM = 10.0
 # A drawing may reach this far (mm) past the area's edge or into the room kept round another: rounding, not overlap.
@@ -290,11 +295,12 @@ class Page:
         rects = [rect for _, rect, _ in self.placed]
         kind = _kind(panel)
         same_kind = [rect for placed, rect, _ in self.placed if _kind(placed) == kind]
+        gaps = [_gap_between(panel, placed) for placed, _, _ in self.placed]
         # Against the area's edges, beside or under another drawing, level with one, or just above the block.
-        xs = {self.area[0], self.area[2] - width, *(r[2] + GAP_MM for r in rects),
-              *(r[0] - GAP_MM - width for r in rects), *(r[0] for r in rects)}
-        tops = {self.area[3], self.block[3] + PADDING_MM + height, *(r[1] - GAP_MM for r in rects),
-                *(r[3] for r in rects)}
+        xs = {self.area[0], self.area[2] - width, *(r[2] + gap for r, gap in zip(rects, gaps, strict=True)),
+              *(r[0] - gap - width for r, gap in zip(rects, gaps, strict=True)), *(r[0] for r in rects)}
+        tops = {self.area[3], self.block[3] + PADDING_MM + height,
+                *(r[1] - gap for r, gap in zip(rects, gaps, strict=True)), *(r[3] for r in rects)}
         if self.corner is not None:
             # Beside the corner box, or under it.
             xs.add(self.corner[2] + PADDING_MM)
@@ -305,7 +311,7 @@ class Page:
         highest = self.area[3] if self.corner is None or not self.tuck else self.corner[1] - PADDING_MM
         # What a drawing keeps clear of, and the drawings' common bounds so far: found once, not at every spot tried
         # (a sheet tries some twenty thousand).
-        blocked = [*self.obstacles(), *(_grown(other, GAP_MM - _EDGE) for other in rects)]
+        blocked = [*self.obstacles(), *(_grown(other, gap - _EDGE) for other, gap in zip(rects, gaps, strict=True))]
         common = [min(r[0] for r in rects), min(r[1] for r in rects), max(r[2] for r in rects),
                   max(r[3] for r in rects)] if rects else None
         ax0, ay0, ax1, ay1 = self.area
@@ -347,6 +353,14 @@ class Page:
     def fits_empty(self, panel: Panel) -> bool:
         geometry = PageGeometry(self.size, self.frame, self.block, self.area, self.corner)
         return any(geometry.holds(width(way), height(way)) for way in panel.ways)
+
+
+def _gap_between(panel: Panel, other: Panel) -> float:
+    """The least space between ``panel`` and ``other`` on a sheet: :data:`BETWEEN_POSITIONS_MM` between the plan
+    sheets of two positions, each drawn whole, else :data:`GAP_MM`."""
+    if _kind(panel) == _kind(other) == "plan" and panel.parts and other.parts:
+        return BETWEEN_POSITIONS_MM
+    return GAP_MM
 
 
 def _reads_after(rect: Rect, earlier: Rect) -> bool:
