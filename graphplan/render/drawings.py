@@ -243,14 +243,6 @@ def mechanism_size(analysis: Analysis, position: PlanPosition, scale: float) -> 
     return _drawing_size(plan_sheet(at_length_scale(analysis, scale), position.index, position.velocity, position.acceleration), "mechanism")
 
 
-def plan_size(analysis: Analysis, position: PlanPosition, kind: str, scale: float) -> tuple[float, float]:
-    """The width and height (mm) of the velocity or acceleration plan (``kind``) of a plan sheet, with its
-    caption, drawn at the plan scale ``scale`` instead of its own."""
-    plans_at = {"velocity": position.velocity, "acceleration": position.acceleration}
-    plans_at[kind] = dataclasses.replace(plans_at[kind], scale=scale)
-    return _drawing_size(plan_sheet(analysis, position.index, **plans_at), kind)
-
-
 def _drawing_size(sheet: plans.PlanSheet, drawing: str) -> tuple[float, float]:
     alone = dataclasses.replace(sheet, drawings=(drawing,))
     x0, y0, x1, y1 = bounds([layer for layer in plans.layout(alone) if layer.name != "sheet-title"])
