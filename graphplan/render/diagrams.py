@@ -275,18 +275,9 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
     # Under the numbers' band wherever they stand, so that the words under the diagram move with no label.
     bottom = min(low - 4.0, rows[-1][0] + 0.3 * NUMBER_SIZE, *(t.at[1] - 2.0 for t in labels[2:]), *(
         y for item in strokes if isinstance(item, Polyline) for _, y in item.points))
-    peak = record.v_peak if kind == "velocity" else record.a_peak
     notes: tuple[Text, ...] = ()
     if kind != "displacement":
-        largest = record.largest_v_difference if kind == "velocity" else record.largest_a_difference
-        analytic = record.v if kind == "velocity" else record.a
-        if np.any(analytic):
-            difference = words["kd_difference"].format(value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}",
-                                                       unit=unit)
-        else:  # a curve nought throughout (a crank's ε at constant ω) has no peak to give the difference a share of
-            scale = record.scales.velocity if kind == "velocity" else record.scales.acceleration
-            read = round(largest / 100.0 * peak / scale, 2) * scale  # to a hundredth of a millimetre of paper
-            difference = words["kd_difference_nought"].format(value=f"{read:.3g}", symbol=symbol, unit=unit)
+        difference = _difference(record, kind, words)
         notes = tuple(Text((0.0, bottom - 6.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start",
                            _CHORD_COLOUR) for k, line in enumerate(fitted(difference, width, SCALE_SIZE)))
     key: tuple[Primitive, ...] = ()
@@ -421,6 +412,30 @@ def _strokes(record: KinematicDiagrams, words: Mapping[str, str], y: float) -> l
         items.append(Text(((x0 + x1) / 2, y - 4.5), words[key].format(angle=f"{math.degrees(angle):.1f}"),
                           SCALE_SIZE, "middle"))
     return items
+
+
+def _difference(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> str:
+    """How far the chord method's velocity or acceleration (``kind``) comes from the analytic one: a share of the
+    analytic peak, or where that is nought throughout (a crank's ε at constant ω), the value itself."""
+    symbol, unit = _symbol(record, kind, words)
+    peak = record.v_peak if kind == "velocity" else record.a_peak
+    largest = record.largest_v_difference if kind == "velocity" else record.largest_a_difference
+    analytic = record.v if kind == "velocity" else record.a
+    if np.any(analytic):
+        return words["kd_difference"].format(value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}", unit=unit)
+    scale = record.scales.velocity if kind == "velocity" else record.scales.acceleration
+    read = round(largest / 100.0 * peak / scale, 2) * scale  # to a hundredth of a millimetre of paper
+    return words["kd_difference_nought"].format(value=f"{read:.3g}", symbol=symbol, unit=unit)
+
+
+def scales_and_differences(record: KinematicDiagrams,
+                           words: Mapping[str, str]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The scales the diagrams are drawn at (the common abscissa's, then each diagram's with its pole distance) and
+    how far the chord method's derivatives come from the analytic ones, each as the drawing writes it: for the note,
+    which gives them beside the figure."""
+    scales = (_abscissa_scale(record, words),
+              *(_scale_line(record, kind, words, _symbol(record, kind, words)[1]) for kind in KINDS))
+    return scales, tuple(_difference(record, kind, words) for kind in KINDS[1:])
 
 
 def _scale_line(record: KinematicDiagrams, kind: str, words: Mapping[str, str], unit: str) -> str:

@@ -472,6 +472,12 @@ _DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 _USER_LAYERS = ("title-block", "sheet-designation")
 
 
+def decimal_marked(text: str, mark: str) -> str:
+    """``text`` with every number's decimal point written ``mark``: what a drawing's words become in its language, for
+    the note that gives the same words beside it."""
+    return _DECIMAL_POINT.sub(mark, text)
+
+
 def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = ()) -> list[Layer]:
     """``layers`` with every number's decimal point written ``mark`` (``","`` in Russian, as ESKD writes it).
 
@@ -486,7 +492,7 @@ def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = 
         for quoted in kept:
             if quoted in text:
                 return quoted.join(marked(part) for part in text.split(quoted))
-        return _DECIMAL_POINT.sub(mark, text)
+        return decimal_marked(text, mark)
 
     return [layer if layer.name in _USER_LAYERS else
             Layer(layer.name, tuple(replace(item, text=marked(item.text)) if isinstance(item, Text) else item

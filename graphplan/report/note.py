@@ -386,6 +386,7 @@ class _Note:
             if diagrams is not None and "diagrams.svg" in self.figures:
                 subsection += 1
                 self.heading(3, diagrams, f"{section}.{subsection}")
+                self.diagrams_method()
                 self.figure("diagrams.svg", diagrams)
         elif diagrams is not None:   # no plans: the diagrams follow the plan of positions they are read off
             self.figure("diagrams.svg", diagrams)
@@ -396,6 +397,19 @@ class _Note:
             section += 1
             forces_section(self, section)
         return section
+
+    def diagrams_method(self) -> None:
+        """How the kinematic diagrams are built (the chord method), the scales diagrams.svg draws them at and how
+        far its derivatives come from the analytic ones, each line as the drawing writes it: the figure stood alone,
+        with no word on the method, its μ or its pole distances."""
+        from ..kinematic_diagrams import of_analysis
+        from ..render.diagrams import scales_and_differences
+        from ..render.primitives import decimal_marked
+
+        scales, differences = scales_and_differences(of_analysis(self.analysis), self.text)
+        self.para(self.t("note_kd_method"))
+        lines = [decimal_marked(line, self.mark) for line in (*scales, *differences)]
+        self.para(*(line + "\\" for line in lines[:-1]), lines[-1])
 
     def structure(self, section: int) -> None:
         mechanism = self.mechanism

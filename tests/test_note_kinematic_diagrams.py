@@ -1,0 +1,62 @@
+"""The note's section on the kinematic diagrams says how they are built and gives the scales diagrams.svg is drawn at.
+
+A reviewer found the section a figure alone: no μφ, μt, μψ, no pole distance H, no word on the chord method.  The
+scales the note gives are read here off the drawing beside it, and their arithmetic (μω = μψ/(μt·H₁),
+με = μω/(μt·H₂), μt = μφ/|ω|) is done again from the numbers printed.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+
+from graphplan.cli import main
+from graphplan.locale import strings
+
+RATCHET = Path("fixtures/ratchet_crank_rocker.toml")
+NUMBER = r"([\d.,]+)"
+
+
+def _words_of(svg: Path) -> str:
+    return " ".join(element.text or "" for element in ElementTree.parse(svg).getroot().iter())
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_note_gives_the_diagrams_method_and_the_scales_they_are_drawn_at(tmp_path, locale):
+    text = re.sub(r'^locale\s*=\s*"\w+"', f'locale = "{locale}"', RATCHET.read_text(encoding="utf-8"),
+                  flags=re.MULTILINE)
+    scene = tmp_path / "ratchet.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note,diagrams"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    words = strings(locale)
+    assert words["note_kd_method"] in note
+    section = note[note.index(words["note_kd_method"]):note.index("](diagrams.svg)")]
+    drawn = _words_of(out / "diagrams.svg")
+
+    def scale(pattern: str) -> float:
+        (found,) = re.findall(pattern, section)
+        # The drawing writes the same scale with the same digits.
+        assert re.search(pattern, drawn) and re.search(pattern, drawn).group(1) == found
+        return float(found.replace(",", "."))
+
+    along = scale(r"μφ = 2π/L = " + NUMBER)
+    length = scale(r"L = " + NUMBER + " (?:mm|мм)")
+    time = scale(r"μt = μφ/\|ω\| = " + NUMBER)
+    omega = scale(r"\|ω\| = " + NUMBER + r" (?:rad/s|рад/с)")
+    psi = scale(r"μψ = " + NUMBER)
+    omega_scale = scale(r"μω = μψ/\(μt·H₁\) = " + NUMBER)
+    first_pole = scale(r"H₁ = " + NUMBER)
+    epsilon_scale = scale(r"με = μω/\(μt·H₂\) = " + NUMBER)
+    second_pole = scale(r"H₂ = " + NUMBER)
+    # The arithmetic the lines write, done again from their printed (rounded) numbers.
+    assert along == pytest.approx(2 * 3.141592653589793 / length, rel=1e-3)
+    assert time == pytest.approx(along / omega, rel=1e-3)
+    assert omega_scale == pytest.approx(psi / (time * first_pole), rel=2e-3)
+    assert epsilon_scale == pytest.approx(omega_scale / (time * second_pole), rel=2e-3)
+    # And how far the chord method comes from the analytic curves, for the velocity and the acceleration.
+    assert len(re.findall(r"\d %|% ", section)) >= 2
