@@ -16,6 +16,7 @@ from test_rpm_slip_everywhere import _flywheel, _rpm_words
 from test_stroke_choice import SLOTTED_BY_A_SLIDER
 
 from graphplan.cli import main
+from graphplan.locale import strings
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 # The note's strokes paragraph's name for positions.working's link, in each language, and the other name it had.
@@ -112,11 +113,29 @@ def test_errors_md_tells_of_hand_drawn_polygons_only_where_the_scene_measured_th
     _, out = _run(tmp_path, capsys, original + FRICTION, "errors")
     unmeasured = _forces_paragraph((out / "errors.md").read_text(encoding="utf-8"))
     assert "hand-drawn" not in unmeasured and "[measured] forces" not in unmeasured, unmeasured
-    assert "forces_friction_N.svg" in unmeasured and "are not checked" in unmeasured
+    assert "forces_friction_N.svg" in unmeasured and "not checked" not in unmeasured, unmeasured
     measured = original.replace("[measured.5]\n", "[measured.5]\nforces = { R23 = 50.0 }\n") + FRICTION
     _, out = _run(tmp_path / "measured", capsys, measured, "errors")
     told = _forces_paragraph((out / "errors.md").read_text(encoding="utf-8"))
     assert "measured on the hand-drawn polygons ([measured] forces) are checked against them" in told
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_errors_md_says_the_friction_polygons_are_checked_where_forces_md_checks_them(tmp_path, capsys, locale):
+    """errors.md said the polygons with friction "are not checked", where the note says they are checked in the
+    force analysis against the linear system with friction: it now says so too, and forces.md does hold that check."""
+    original = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    _, out = _run(tmp_path, capsys, original + FRICTION, "errors,forces", locale)
+    told = _forces_paragraph((out / "errors.md").read_text(encoding="utf-8"))
+    text = strings(locale)
+    # The sentence each language said they were not checked with, and the note's own words for where they are.
+    unchecked = {"en": "not checked", "ru": "не проверяются", "zh": "不作校核"}[locale]
+    checked = {"en": "are checked in the force analysis (forces.md), against the linear system with friction",
+               "ru": "проверяются в силовом расчёте (forces.md) — по системе уравнений равновесия с трением",
+               "zh": "在力分析（forces.md）中与计入摩擦的平衡方程组比较"}[locale]
+    assert unchecked not in told and checked in told, told
+    # The check errors.md points to: the reactions of the polygons with friction against the system with friction.
+    assert text["forces_friction_reactions"] in (out / "forces.md").read_text(encoding="utf-8")
 
 
 def test_a_start_too_fast_is_refused_at_its_full_key_path(tmp_path, capsys):

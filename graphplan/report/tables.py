@@ -336,7 +336,8 @@ def reactions_intro(analysis: Analysis, in_note: bool = False) -> str:
         # the words.
         key = "errors_forces_without_friction" if measured else "errors_forces_without_friction_unmeasured"
         without = text[key].format(
-            plain="forces_N.svg", with_friction="forces_friction_N.svg", measured="[measured] forces")
+            plain="forces_N.svg", with_friction="forces_friction_N.svg", measured="[measured] forces",
+            forces="forces.md")
     # The balancing load found by hand, checked beside the reactions: what its rows compare, and its sense's source.
     balancing = next((row.quantity for plan in analysis.plans for row in plan.errors
                       if row.source == "measured" and is_balancing(row.quantity)), None)
