@@ -389,17 +389,19 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
             parts.append(f"M({term.name}) = {note.n(term.moment)} {text['newton_metre']}")
     terms = "".join(f" {'−' if term.moment < 0 else '+'} {note.n(abs(term.moment))}" for term in shown)
     sum_text = note.n(total)
-    if couple and equation.unknown.endswith("·x") and abs(equation.value) <= ROUNDING * max(size, 1.0):
+    # forces.md asks the same: both write a slide's equation as the shift x it finds.
+    shift = force_report.shift(group, equation) if group is not None else None
+    if shift is not None and shift.through:
         # A slide's normal reaction with no couple to carry: it passes through the moment centre, its joint.
         line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
-                + note.t("note_couple_through", name=equation.unknown[:-2], point=equation.about))
-    elif (shifted := _shifted_reaction(group, equation)) is not None:
+                + note.t("note_couple_through", name=shift.reaction, point=equation.about))
+    elif shift is not None:
         # A slide's normal reaction off its joint by x, a length, as on the force sheet: R·x signed by its moment,
         # which balances the rest (a pin's friction moment Mf56 on the ram), and x its size over |R|.
-        size, force = abs(equation.value), abs(shifted.force)
+        size, force = abs(shift.moment), shift.force
         line = (f"ΣM{equation.about}({equation.bodies}) = {_sign(equation.value)}{equation.unknown}{terms} = 0 ⇒ "
                 f"{equation.unknown} = {note.n(size)} {unit}{text['comma']}x = {note.n(size)}/{note.n(force)} = "
-                f"{note.n(size / force)} {text['unit_m']} = {note.n(1000.0 * size / force)} {text['millimetre']}")
+                f"{note.n(shift.x)} {text['unit_m']} = {note.n(1000.0 * shift.x)} {text['millimetre']}")
     elif couple:
         line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
                 f"{equation.unknown} = {note.n(equation.value)} {unit}")
@@ -412,15 +414,6 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
         if equation.value < 0:
             line += " " + note.t("note_sense_reversed", name=equation.unknown)
     return note.text["semicolon"].join([*parts, line])
-
-
-def _shifted_reaction(group, equation):
-    """The reaction of an ``R16·x`` equation where it is off its joint by x (its couple and itself not nought), or
-    None: where the reaction is nought the guide holds the couple alone, and R·x stands for it, signed."""
-    if group is None or not equation.unknown.endswith("·x") or group.held_as_couple_alone(equation):
-        return None
-    found = next((item for item in group.found if item.name == equation.unknown[:-2]), None)
-    return found if found is not None and abs(found.force) > 0 else None
 
 
 def _sign(value: float) -> str:

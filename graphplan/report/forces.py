@@ -69,6 +69,39 @@ def error_percent(exact: float, found: float, mark: str = ".") -> str:
 
 
 @dataclass(frozen=True)
+class Shift:
+    """What a slide's moment equation ``ΣM = R·x + … = 0`` finds: the couple R·x (N·m, signed by its moment) of the
+    normal reaction ``reaction``, of size ``force`` (N), shifted x along the slide from the joint the moments are
+    taken about.  A couple of nought puts the reaction's line through that joint: x = 0."""
+
+    reaction: str
+    moment: float
+    force: float
+
+    @property
+    def through(self) -> bool:
+        return self.moment == 0.0
+
+    @property
+    def x(self) -> float:
+        """The shift, m: the couple's size over the reaction's."""
+        return abs(self.moment) / self.force if self.force else 0.0
+
+
+def shift(group, equation) -> Shift | None:
+    """The shift x an equation solved for a slide's couple R·x finds, as forces.md and the note both write it, or
+    None: an equation for a force or Mb, or a couple its guide holds alone (R = 0, no line and no x)."""
+    if not equation.unknown.endswith("·x") or group.held_as_couple_alone(equation):
+        return None
+    name = equation.unknown.removesuffix("·x")
+    size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
+    if abs(equation.value) <= ROUNDING * max(size, 1.0):
+        return Shift(name, 0.0, 0.0)
+    found = next((item for item in group.found if item.name == name), None)
+    return Shift(name, equation.value, abs(found.force)) if found is not None and abs(found.force) > 0 else None
+
+
+@dataclass(frozen=True)
 class LinkData:
     """One row of the initial data of the force analysis: a link's mass and inertia, and its motion from the plans.
 
@@ -497,12 +530,23 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     metre, newton_metre = text["unit_m"], text["newton_metre"]
     for group in forces.groups:
         for equation in group.moments:
+            # The moments the unknown balances, as the note writes them: a term of the plan's rounding (a block's
+            # couple R34·x about C where its line passes through A) balances nothing and is left out.
             terms = ", ".join(f"{term.name}: {number(term.moment, mark=mark)} {newton_metre}"
                               + (f" (h = {number(term.arm, 4, mark)} {metre})" if term.arm else "")
-                              for term in equation.terms)
+                              for term in equation.standing_terms)
             unit = newton_metre if equation.couple else text["newton"]
-            line = (f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {equation.unknown} = "
-                    f"{number(equation.value, mark=mark)} {unit}" + (f"; {terms}" if terms else ""))
+            found = shift(group, equation)
+            if found is None:
+                solved = f"{equation.unknown} = {number(equation.value, mark=mark)} {unit}"
+            elif found.through:
+                solved = text["note_couple_through"].format(name=found.reaction, point=equation.about)
+            else:
+                # A slide's reaction off its joint: the equation gives its shift, the couple over the reaction.
+                solved = (f"x = |{equation.unknown}|/{found.reaction} = {number(abs(found.moment), mark=mark)}/"
+                          f"{number(found.force, mark=mark)} = {number(found.x, mark=mark)} {metre}")
+            line = (f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {solved}"
+                    + (f"; {terms}" if terms else ""))
             if reaction := group.held_as_couple_alone(equation):
                 line += text["semicolon"] + text["note_couple_alone"].format(name=reaction)
             lines.append(line)
@@ -554,4 +598,5 @@ __all__ = [
     "polar",
     "reaction_lines",
     "reaction_rows",
+    "shift",
 ]
