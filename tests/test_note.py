@@ -558,7 +558,12 @@ def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
             # coefficient is f as given, not a reduced f′).
             at = pair.joint if [p.joint for p in analysis.friction].count(pair.joint) == 1 else f"{pair.source}{pair.target}"
             symbol = f"f{at}" if pair.sliding else f"ρ{at}"
-            assert f"{name} = {symbol}·{pair.reaction} = {n(factor)}·{n(reaction)} = {n(factor * reaction)}" in note
+            # The reaction is written to as many digits as make the printed product read the load as printed.
+            written = re.search(rf"{name} = {symbol}·{pair.reaction} = {re.escape(n(factor))}·([\d.]+) = "
+                                rf"{re.escape(n(factor * reaction))}(?![\d.])", note)
+            assert written, name
+            assert float(written[1]) == pytest.approx(reaction, rel=1e-4)
+            assert n(factor * float(written[1])) == n(factor * reaction)
             if not pair.sliding:
                 assert f"ρ{at} = f·r = {n(pair.spec.f)}·{n(pair.spec.radius)} = {n(pair.radius)} m" in note
         lever = plan.lever_with_friction.balancing

@@ -139,15 +139,17 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
     for row in force_report.initial_data(analysis, plan):
         parts = []
         if row.mass > 0:
-            parts.append(f"G{row.link} = m{row.link}·g = {note.product(note.n(row.mass), note.n(row.gravity))} = "
-                         f"{note.n(row.weight)} {text['newton']}")
+            weight, inertia_force = note.n(row.weight), note.n(row.inertia_force)
+            parts.append(f"G{row.link} = m{row.link}·g = {_product(note, [row.mass, row.gravity], weight)} = "
+                         f"{weight} {text['newton']}")
             parts.append(f"Fu{row.link} = m{row.link}·aS{row.link} = "
-                         f"{note.product(note.n(row.mass), note.n(row.centre_acceleration))} = "
-                         f"{note.n(row.inertia_force)} {text['newton']}")
+                         f"{_product(note, [row.mass, row.centre_acceleration], inertia_force)} = "
+                         f"{inertia_force} {text['newton']}")
         if row.inertia > 0 and row.epsilon != 0:
+            inertia_moment = note.n(row.inertia_moment)
             moment = (f"Mu{row.link} = J{row.link}·ε{row.link} = "
-                      f"{note.product(note.n(row.inertia), note.n(abs(row.epsilon)))} = "
-                      f"{note.n(row.inertia_moment)} {text['newton_metre']}")
+                      f"{_product(note, [row.inertia, abs(row.epsilon)], inertia_moment)} = "
+                      f"{inertia_moment} {text['newton_metre']}")
             moment += note.with_sense(-row.epsilon)
             parts.append(moment)
         # [forces] inertia = "displaced": Fu's line is off the centre, which the arms of the moment equations and the
@@ -210,13 +212,14 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
             # The friction angle, as the force sheet gives it: the normal reaction and Ff lean together by φ.
             angle = f"φ = {text['arctangent']} {symbol}{where} = {note.n(math.degrees(math.atan(row.factor)))}°"
             lines.append(f"- {symbol}{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
-                         f"{symbol}{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))}"
+                         f"{symbol}{where}·{pair.reaction} = "
+                         f"{_product(note, [row.factor, row.reaction], note.n(row.value))}"
                          f" = {note.n(row.value)}{_direction(note, row.acting)} {text['newton']}{text['semicolon']}"
                          f"{angle}")
         else:
-            lines.append(f"- ρ{where} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "
+            lines.append(f"- ρ{where} = f·r = {_product(note, [pair.spec.f, pair.spec.radius], note.n(row.factor))} = "
                          f"{note.n(row.factor)} {text['unit_m']}{text['semicolon']}{name} = "
-                         f"ρ{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))} = "
+                         f"ρ{where}·{pair.reaction} = {_product(note, [row.factor, row.reaction], note.n(row.value))} = "
                          f"{note.n(row.value)} {text['newton_metre']}{note.with_sense(row.acting.real)}")
     note.para(note.t("note_friction_loads"), *lines)
     if both := _both_links(note, plan):
@@ -352,9 +355,48 @@ def _assur_point(note: Writer, group, whole) -> str:
 def _projection(note: Writer, equation) -> str:
     """ΣFτ(5) = R35τ + G5τ + Fu5τ = R35τ − 11.77 + 3.1 = 0 ⇒ R35τ = 8.67 N."""
     names = "".join(f" + {name}τ" for name, _ in equation.components)
-    values = "".join(f" {'−' if value < 0 else '+'} {note.n(abs(value))}" for _, value in equation.components)
+    result = note.n(equation.value)
+    values = _summed(note, [value for _, value in equation.components], result, lambda total: -total)
     return (f"ΣFτ({equation.link}) = {equation.unknown}{names} = {equation.unknown}{values} = 0 ⇒ "
-            f"{equation.unknown} = {note.n(equation.value)} {note.text['newton']}")
+            f"{equation.unknown} = {result} {note.text['newton']}")
+
+
+# The most significant digits a number of a worked-out formula is written to: one more would be beyond the double's.
+MOST_DIGITS = 15
+
+
+def _read(note: Writer, written: str) -> float:
+    return float(written.replace("−", "-").replace(note.mark, "."))
+
+
+def reproducing(note: Writer, values: list[float], least: list[int], result: str, digits: int,
+                combine) -> tuple[list[str], int]:
+    """``values`` written for a formula whose printed arithmetic, ``combine`` of them as written, must give the result
+    as written (``result``, to ``digits`` significant digits): each to its ``least`` significant digits, all a digit
+    more at a time until it does (1356.4/0.425 printed = 3191.5, not the −3191.7 found: 1356.35/0.42496).  Also the
+    digits added, for the formulas that give these values in turn."""
+    extra = 0
+    while True:
+        written = [note.n(value, least[index] + extra) for index, value in enumerate(values)]
+        try:
+            if note.n(combine(*(_read(note, text) for text in written)), digits) == result:
+                return written, extra
+        except (ValueError, ZeroDivisionError):  # a power of ten (2.1·10¹¹) or a nought: written as it is
+            return written, extra
+        if max(least) + extra >= MOST_DIGITS:
+            return written, extra
+        extra += 1
+
+
+def _summed(note: Writer, moments: list[float], result: str, solve, digits: int = 5) -> str:
+    """`` − 34.254 + 39.287 + 9.34``: the terms of a sum, each signed, written to as many digits as make ``solve`` of
+    their printed sum read ``result`` (to ``digits``)."""
+    if not moments:
+        return ""
+    signs = [-1.0 if moment < 0 else 1.0 for moment in moments]
+    written, _ = reproducing(note, [abs(moment) for moment in moments], [5] * len(moments), result, digits,
+                             lambda *sizes: solve(sum(sign * size for sign, size in zip(signs, sizes, strict=True))))
+    return "".join(f" {'−' if sign < 0 else '+'} {size}" for sign, size in zip(signs, written, strict=True))
 
 
 def _polygon_sums(note: Writer, group) -> str:
@@ -369,7 +411,11 @@ def _polygon_sums(note: Writer, group) -> str:
 
 
 def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=None) -> str:
-    """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h."""
+    """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h.
+
+    Each number is written to as many digits as make the arithmetic as printed give the number printed after it:
+    the reader who checks the note with a calculator finds its results.  So the result is written first, and the
+    numbers it is worked out from after it, each as long as it needs."""
     text = note.text
     total = sum(term.moment for term in equation.terms)
     couple = equation.unknown.startswith("M") or "·" in equation.unknown
@@ -377,43 +423,88 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
     # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written.
     size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
     shown = [term for term in equation.terms if abs(term.moment) > ROUNDING * size]
-    parts = []
-    for term in shown:
-        load = loads.get(term.name)
-        force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
-        if force is not None and term.arm:
-            parts.append(f"M({term.name}) = {_sign(term.moment)}{term.name}·h = "
-                         f"{_sign(term.moment)}{note.product(note.n(abs(force)), note.n(term.arm, 4))} = "
-                         f"{note.n(term.moment)} {text['newton_metre']}")
-        else:
-            parts.append(f"M({term.name}) = {note.n(term.moment)} {text['newton_metre']}")
-    terms = "".join(f" {'−' if term.moment < 0 else '+'} {note.n(abs(term.moment))}" for term in shown)
-    sum_text = note.n(total)
+    moments = [term.moment for term in shown]
     # forces.md asks the same: both write a slide's equation as the shift x it finds.
     shift = force_report.shift(group, equation) if group is not None else None
+    head = f"ΣM{equation.about}({equation.bodies})"
     if shift is not None and shift.through:
         # A slide's normal reaction with no couple to carry: it passes through the moment centre, its joint.
-        line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
+        terms = "".join(f" {'−' if moment < 0 else '+'} {note.n(abs(moment))}" for moment in moments)
+        line = (f"{head} = {equation.unknown}{terms} = 0 ⇒ "
                 + note.t("note_couple_through", name=shift.reaction, point=equation.about))
     elif shift is not None:
         # A slide's normal reaction off its joint by x, a length, as on the force sheet: R·x signed by its moment,
         # which balances the rest (a pin's friction moment Mf56 on the ram), and x its size over |R|.
-        size, force = abs(shift.moment), shift.force
-        line = (f"ΣM{equation.about}({equation.bodies}) = {_sign(equation.value)}{equation.unknown}{terms} = 0 ⇒ "
-                f"{equation.unknown} = {note.n(size)} {unit}{text['comma']}x = {note.n(size)}/{note.n(force)} = "
-                f"{note.n(shift.x)} {text['unit_m']} = {note.n(1000.0 * shift.x)} {text['millimetre']}")
+        x = note.n(shift.x)
+        (couple_text, force), _ = reproducing(note, [abs(shift.moment), shift.force], [5, 5], x, 5,
+                                              lambda moment, force: moment / force)
+        digits = _digits(couple_text)
+        terms = _summed(note, moments, couple_text, lambda total: abs(total), digits)
+        line = (f"{head} = {_sign(equation.value)}{equation.unknown}{terms} = 0 ⇒ "
+                f"{equation.unknown} = {couple_text} {unit}{text['comma']}x = {couple_text}/{force} = "
+                f"{x} {text['unit_m']} = {note.n(1000.0 * shift.x)} {text['millimetre']}")
+        moments_written = _written_terms(terms)
+        return note.text["semicolon"].join([*_moment_parts(note, shown, loads, moments_written), line])
     elif couple:
-        line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
-                f"{equation.unknown} = {note.n(equation.value)} {unit}")
+        value = note.n(equation.value)
+        terms = _summed(note, moments, value, lambda total: -total)
+        line = f"{head} = {equation.unknown}{terms} = 0 ⇒ {equation.unknown} = {value} {unit}"
     else:
+        value = note.n(equation.value)
+        # sign·R·arm + Σ = 0: R = −Σ/(sign·arm), the arm written as the equation and the solution both write it.
         lever = -total / equation.value if equation.value else equation.arm
-        sign = "−" if lever < 0 else ""
-        solved = f"{sum_text}/{note.n(equation.arm, 4)}" if lever < 0 else f"−({sum_text})/{note.n(equation.arm, 4)}"
-        line = (f"ΣM{equation.about}({equation.bodies}) = {sign}{equation.unknown}·{note.n(equation.arm, 4)}{terms} = 0"
-                f" ⇒ {equation.unknown} = {solved} = {note.n(equation.value)} {unit}")
+        sign = -1.0 if lever < 0 else 1.0
+        (sum_text, arm), extra = reproducing(note, [abs(total), equation.arm], [5, 4], value, 5,
+                                             lambda size, arm: -math.copysign(size, total) / (sign * arm))
+        terms = _summed(note, moments, sum_text, lambda found: abs(found), 5 + extra)
+        written_sum = f"−{sum_text}" if total < 0 else sum_text
+        # −Σ/arm, or Σ/arm where the unknown stands with a minus: a negative Σ after a minus in brackets.
+        solved = f"{written_sum}/{arm}" if sign < 0 else f"−{note.enclosed(written_sum)}/{arm}"
+        line = (f"{head} = {'−' if sign < 0 else ''}{equation.unknown}·{arm}{terms} = 0"
+                f" ⇒ {equation.unknown} = {solved} = {value} {unit}")
         if equation.value < 0:
             line += " " + note.t("note_sense_reversed", name=equation.unknown)
-    return note.text["semicolon"].join([*parts, line])
+    return note.text["semicolon"].join([*_moment_parts(note, shown, loads, _written_terms(terms)), line])
+
+
+def _product(note: Writer, factors: list[float], result: str) -> str:
+    """``6·1.1844``: the factors of a product the note writes as ``result``, each to as many digits as make their
+    printed product read it (6·1.18440, not 6·1.1844 = 7.1061)."""
+    written, _ = reproducing(note, factors, [5] * len(factors), result, _digits(result),
+                             lambda *printed: math.copysign(math.prod(printed), _read(note, result)))
+    return note.product(*written)
+
+
+def _digits(written: str) -> int:
+    """The significant digits a number the note writes to five or more was written to: ``258.065``, six."""
+    mantissa = written.split("·10")[0]
+    figures = re.sub(r"\D", "", mantissa).lstrip("0")
+    # A whole number's noughts at its end hold places, not digits: 405370 to five digits.
+    return max(5, len(figures if "." in mantissa or "," in mantissa else figures.rstrip("0")))
+
+
+def _written_terms(terms: str) -> list[str]:
+    """The sizes of `` − 34.254 + 39.287`` as written: each term's moment is written so in its own M(·) too."""
+    return terms.split()[1::2]
+
+
+def _moment_parts(note: Writer, shown, loads: Mapping[str, object], written: list[str]) -> list[str]:
+    """``M(G3) = −G3·h = −166.77·0.2054 = −34.254 N·m``: each term's moment, written as the equation writes it, with
+    its force and arm to as many digits as make their product read it."""
+    parts = []
+    for term, size in zip(shown, written, strict=True):
+        moment = f"{_sign(term.moment)}{size}"
+        load = loads.get(term.name)
+        force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
+        if force is not None and term.arm:
+            digits = _digits(size)
+            (magnitude, arm), _ = reproducing(note, [abs(force), term.arm], [5, 4], size, digits,
+                                              lambda force, arm: abs(force * arm))
+            parts.append(f"M({term.name}) = {_sign(term.moment)}{term.name}·h = "
+                         f"{_sign(term.moment)}{note.product(magnitude, arm)} = {moment} {note.text['newton_metre']}")
+        else:
+            parts.append(f"M({term.name}) = {moment} {note.text['newton_metre']}")
+    return parts
 
 
 def _sign(value: float) -> str:
@@ -472,13 +563,21 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
         pa = abs(velocity.value(driver.joint)) / drawn_at
         segment = note.segment(velocity, "p", velocity.images[driver.joint])
         force = abs(total) / pa if pa else math.nan
+        # Fb as long as |Mb| = Fb·l, written to six digits, needs it to read so; then |Σ(F·h)| and pa as long as Fb needs.
+        moment = note.n(abs(lever.balancing), 6)
+        if driver.kind == "crank":
+            (written_force, arm), _ = reproducing(note, [force, driver.length], [5, 5], moment, 6,
+                                                  lambda force, arm: force * arm)
+        else:
+            written_force = note.n(force)
+        (moments, pole), _ = reproducing(note, [abs(total), pa], [5, 5], written_force,
+                                         _digits(written_force), lambda moments, pole: moments / pole)
         # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
-        equation = (f"Fb = |Σ(F·h)|/{segment} = {note.n(abs(total))}/{note.mm(pa)} = {note.n(force)} "
-                    f"{text['newton']}")
+        equation = f"Fb = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"
         if driver.kind == "crank":
             length = f"l{driver.pivot}{driver.joint}"
-            equation += (f"{text['separator']}|{name}| = Fb·{length} = {note.product(note.n(force), note.n(driver.length))} = "
-                         f"{note.n(abs(lever.balancing), 6)} {unit}{note.with_sense(lever.balancing)}")
+            equation += (f"{text['separator']}|{name}| = Fb·{length} = {note.product(written_force, arm)} = "
+                         f"{moment} {unit}{note.with_sense(lever.balancing)}")
             note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True),
                              equation=equation))
         else:  # a slider's balancing load is the lever's force itself, signed: not named twice as if another load
