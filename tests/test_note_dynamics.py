@@ -354,7 +354,7 @@ def test_a_linear_or_constant_motor_is_described_with_its_numbers_on_its_shaft_a
     note, _, _ = machine_note(tmp_path, motor)
     for pattern, exact in expected.items():
         assert all(close(written, value) for written, value in zip(numbers(pattern, note), exact, strict=True))
-    assert "(Je + JF)·dω/dt = " in note and "the motor's rotor is left out, the scene giving it no rotor_inertia" in note
+    assert "(Je + JF)·dω/dt = " in note and "the motor's rotor is left out, the initial data giving no moment of inertia of it" in note
 
 
 def test_a_clutch_gives_each_half_its_equation_while_it_slips_and_one_when_it_locks(tmp_path):
