@@ -762,7 +762,7 @@ def test_a_guide_on_a_moving_link_is_among_the_initial_data(locale):
     assert seen_from_crank == pytest.approx(np.full(12, 30.0), abs=1e-9)
     expected = {"en": "| guide of B | through A, at 30° to OA |",
                 "ru": "| направляющая точки B | через A, под углом 30° к OA |",
-                "zh": "| B的导路 | 过A，与OA成30° |"}[locale]
+                "zh": "| B 的导路 | 过 A，与 OA 成 30° |"}[locale]
     assert expected in note_markdown(analysis).splitlines()
 
 
@@ -777,7 +777,7 @@ def test_an_rpp_slot_angle_is_among_the_initial_data(locale):
     assert math.degrees(slot - guide) % 360.0 == pytest.approx(60.0)
     expected = {"en": "| slot of link 4 | at 60° to the guide of B, counter-clockwise from the guide |",
                 "ru": "| паз звена 4 | под углом 60° к направляющей точки B, против часовой стрелки от неё |",
-                "zh": "| 构件 4 上的导槽 | 与B的导路成60°，自导路逆时针量取 |"}[locale]
+                "zh": "| 构件 4 上的导槽 | 与 B 的导路成 60°，自导路逆时针量取 |"}[locale]
     assert expected in note_markdown(analysis).splitlines()
 
 

@@ -488,7 +488,7 @@ class _Note:
             # K ≥ 1 where the working stroke is the slower one, as a machine that works in one stroke is laid out.
             quicker = f" {self.t('note_strokes_quicker')}" if working / idle < 1.0 - 1e-6 else ""
             # The stroke H or swing ψ the plan of positions dimensions, which the note handed in alone would lack.
-            travels = [travel.text.replace(".", self.mark) for travel in dimensioned_travels(self.analysis, self.text)]
+            travels = [self.travel_words(travel) for travel in dimensioned_travels(self.analysis, self.text)]
             travel = f" {self.t('note_strokes_travel', travels=', '.join(travels))}" if travels else ""
             self.para(f"{strokes} {theta}{quicker}{travel}")
             self.extra_reversals()
@@ -496,6 +496,16 @@ class _Note:
             self.para(self.t("note_turns_round", link=scene.positions.working.link,
                              turns=Count(abs(self.analysis.positions.working_link_turns))))
         self.scene_warnings()
+
+    def travel_words(self, travel) -> str:
+        """``the rocker's swing ψ = 67.6°``, ``the stroke H = 0.3 m``: a travel the plan of positions dimensions, named
+        by its kind, as the textbook names a rocker's swing (угол размаха коромысла, 摇杆摆角) apart from a slider's
+        stroke (ход, 行程), and a slotted lever's, a link a block slides in, apart from a rocker's."""
+        value = travel.text.replace(".", self.mark)
+        if not travel.swing:
+            return self.t("note_travel_stroke", value=value)
+        slotted = any(slide.guide == travel.link for slide in self.analysis.motion.slides)
+        return self.t("note_travel_swing_slotted" if slotted else "note_travel_swing", value=value)
 
     def extra_reversals(self) -> None:
         """Where the working link turns back more than twice a turn, the two extremes the strokes paragraph names are
