@@ -75,3 +75,23 @@ def test_the_force_analysis_s_printed_arithmetic_gives_its_printed_results(tmp_p
     # A single positive number stands in no brackets: −1356.35/0.42496, not −(1356.35)/0.42496.
     # (ΣME(5) names link 5: a bracket after a letter is no number's.)
     assert not re.search(rf"(?<![\w)])\((?:\d+(?:{re.escape(mark)}\d+)?)\)", section), section
+
+
+@pytest.mark.parametrize("starter", STARTERS)
+def test_the_plans_worked_out_formulas_give_their_printed_results(tmp_path, capsys, starter):
+    """The driving crank's VA = ω2·lOA, aAⁿ = ω2²·lOA, aA^τ = ε2·lOA and each Coriolis acceleration 2·ω·V, with their
+    numbers put in (6.2832²·0.1 gave 3.9479 where 3.9478 was printed), worked out again from the printed numbers.
+    (A reading off a plan, pb·μV with pb as drawn to a hundredth of a millimetre, is not among them.)"""
+    scene, out = tmp_path / f"{starter}.toml", tmp_path / "out"
+    assert main(["new", starter, "--out", str(scene)]) == 0
+    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", "en"]) == 0
+    capsys.readouterr()
+    note = (out / "note.md").read_text(encoding="utf-8")
+    symbolic = re.compile(r"(?:ω\d+²?·l\w+|ε\d+·l\w+|2·ω\d+·V\w+(?: \(ω\d+ = ω\d+\))?) = (?P<rest>[^ ]+ = −?[\d.]+)")
+    # ω² as the product it stands for, which the pattern of products reads.
+    formulas = [formula for match in symbolic.finditer(note)
+                for formula in worked_formulas(re.sub(r"([\d.]+)²", r"\1·\1", match["rest"]), ".")]
+    assert formulas, note[:3000]
+    wrong = [(formula, value) for formula, value, result in formulas
+             if abs(value - _number(result, ".")) > _half_unit(result, ".") * (1 + 1e-9)]
+    assert not wrong, wrong

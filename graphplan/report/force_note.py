@@ -140,15 +140,15 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
         parts = []
         if row.mass > 0:
             weight, inertia_force = note.n(row.weight), note.n(row.inertia_force)
-            parts.append(f"G{row.link} = m{row.link}·g = {_product(note, [row.mass, row.gravity], weight)} = "
+            parts.append(f"G{row.link} = m{row.link}·g = {worked_product(note, [row.mass, row.gravity], weight)} = "
                          f"{weight} {text['newton']}")
             parts.append(f"Fu{row.link} = m{row.link}·aS{row.link} = "
-                         f"{_product(note, [row.mass, row.centre_acceleration], inertia_force)} = "
+                         f"{worked_product(note, [row.mass, row.centre_acceleration], inertia_force)} = "
                          f"{inertia_force} {text['newton']}")
         if row.inertia > 0 and row.epsilon != 0:
             inertia_moment = note.n(row.inertia_moment)
             moment = (f"Mu{row.link} = J{row.link}·ε{row.link} = "
-                      f"{_product(note, [row.inertia, abs(row.epsilon)], inertia_moment)} = "
+                      f"{worked_product(note, [row.inertia, abs(row.epsilon)], inertia_moment)} = "
                       f"{inertia_moment} {text['newton_metre']}")
             moment += note.with_sense(-row.epsilon)
             parts.append(moment)
@@ -213,13 +213,13 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
             angle = f"φ = {text['arctangent']} {symbol}{where} = {note.n(math.degrees(math.atan(row.factor)))}°"
             lines.append(f"- {symbol}{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
                          f"{symbol}{where}·{pair.reaction} = "
-                         f"{_product(note, [row.factor, row.reaction], note.n(row.value))}"
+                         f"{worked_product(note, [row.factor, row.reaction], note.n(row.value))}"
                          f" = {note.n(row.value)}{_direction(note, row.acting)} {text['newton']}{text['semicolon']}"
                          f"{angle}")
         else:
-            lines.append(f"- ρ{where} = f·r = {_product(note, [pair.spec.f, pair.spec.radius], note.n(row.factor))} = "
+            lines.append(f"- ρ{where} = f·r = {worked_product(note, [pair.spec.f, pair.spec.radius], note.n(row.factor))} = "
                          f"{note.n(row.factor)} {text['unit_m']}{text['semicolon']}{name} = "
-                         f"ρ{where}·{pair.reaction} = {_product(note, [row.factor, row.reaction], note.n(row.value))} = "
+                         f"ρ{where}·{pair.reaction} = {worked_product(note, [row.factor, row.reaction], note.n(row.value))} = "
                          f"{note.n(row.value)} {text['newton_metre']}{note.with_sense(row.acting.real)}")
     note.para(note.t("note_friction_loads"), *lines)
     if both := _both_links(note, plan):
@@ -467,7 +467,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
     return note.text["semicolon"].join([*_moment_parts(note, shown, loads, _written_terms(terms)), line])
 
 
-def _product(note: Writer, factors: list[float], result: str) -> str:
+def worked_product(note: Writer, factors: list[float], result: str) -> str:
     """``6·1.1844``: the factors of a product the note writes as ``result``, each to as many digits as make their
     printed product read it (6·1.18440, not 6·1.1844 = 7.1061)."""
     written, _ = reproducing(note, factors, [5] * len(factors), result, _digits(result),

@@ -50,7 +50,7 @@ from ..scales import format_scale, standard_scale
 from ..scene import Scene
 from ..wording import driver_at, raised
 from . import forces as force_report
-from .force_note import forces_section
+from .force_note import forces_section, reproducing, worked_product
 from .machine_note import balancing_section, dynamics_section, vibration_section
 from .markdown import literal, set_close, user_texts
 from .symbols import CAPITALS
@@ -815,19 +815,25 @@ class _Note:
         length = f"l{driver.pivot}{joint}"
         omega, epsilon, arm = abs(driver.omega), driver.epsilon, driver.length
         if velocity:
-            equation = (f"V{joint} = ω{driver.link}·{length} = {self.product(self.n(omega), self.n(arm))} = "
-                        f"{self.n(value)} {unit}")
+            written = self.n(value)
+            equation = (f"V{joint} = ω{driver.link}·{length} = {worked_product(self, [omega, arm], written)} = "
+                        f"{written} {unit}")
             self.para(self.t("note_crank_velocity", equation=equation, joint=joint, pivot=driver.pivot,
                              link=driver.link, sense=self.sense(driver.omega)))
             return
-        normal = f"a{joint}ⁿ = ω{driver.link}²·{length} = {self.n(omega)}²{self.text['times']}{self.n(arm)} = " \
-                 f"{self.n(omega * omega * arm)} {unit}"
+        centripetal = self.n(omega * omega * arm)
+        # ω² times the arm as printed gives the result as printed: 6.28319²·0.1 = 3.9478, where 6.2832² gave 3.9479.
+        (written_omega, written_arm), _ = reproducing(self, [omega, arm], [5, 5], centripetal, 5,
+                                                      lambda omega, arm: omega * omega * arm)
+        normal = f"a{joint}ⁿ = ω{driver.link}²·{length} = {written_omega}²{self.text['times']}{written_arm} = " \
+                 f"{centripetal} {unit}"
         if epsilon == 0:
             self.para(self.t("note_crank_acceleration", equation=f"a{joint} = {normal}", joint=joint,
                              pivot=driver.pivot, link=driver.link))
             return
-        tangential = (f"a{joint}^τ = ε{driver.link}·{length} = {self.product(self.n(abs(epsilon)), self.n(arm))} = "
-                      f"{self.n(abs(epsilon) * arm)} {unit}")
+        written = self.n(abs(epsilon) * arm)
+        tangential = (f"a{joint}^τ = ε{driver.link}·{length} = {worked_product(self, [abs(epsilon), arm], written)} = "
+                      f"{written} {unit}")
         total = f"a{joint} = √((a{joint}ⁿ)² + (a{joint}^τ)²) = {self.n(value)} {unit}"
         self.para(self.t("note_crank_acceleration_tangential", normal=normal, tangential=tangential, total=total,
                          joint=joint, pivot=driver.pivot, link=driver.link, sense=self.sense(epsilon)))
@@ -1040,8 +1046,11 @@ class _Note:
         if omega is None or length == 0 or not math.isclose(omega * omega * length, value, rel_tol=_SAME,
                                                              abs_tol=_SAME * value + 1e-300):
             return f"{self.n(value)} {unit}", direction
-        modulus = (f"ω{link}²·l{centre}{moving} = {self.n(abs(omega))}²{self.text['times']}{self.n(length)} = "
-                   f"{self.n(value)} {unit}")
+        written = self.n(value)
+        (written_omega, written_length), _ = reproducing(self, [abs(omega), length], [5, 5], written, 5,
+                                                         lambda omega, length: omega * omega * length)
+        modulus = (f"ω{link}²·l{centre}{moving} = {written_omega}²{self.text['times']}{written_length} = "
+                   f"{written} {unit}")
         return modulus, direction
 
     def coriolis(self, pp: PlanPosition, name: str, value: float) -> tuple[str, str]:
@@ -1066,8 +1075,9 @@ class _Note:
         worked = [int(reading.quantity[5:]) for reading in pp.readings if reading.quantity.startswith("omega")]
         twin = next((k for k in worked if k != link and math.isclose(pp.velocity.rates[k], omega, rel_tol=_SAME)), None)
         same = "" if twin is None or link in worked else f" (ω{link} = ω{twin})"
-        modulus = (f"2·ω{link}·V{body}{same} = {self.product('2', self.n(abs(omega)), self.n(relative))} = "
-                   f"{self.n(value)} {unit}")
+        written = self.n(value)
+        modulus = (f"2·ω{link}·V{body}{same} = {worked_product(self, [2.0, abs(omega), relative], written)} = "
+                   f"{written} {unit}")
         return modulus, self.t("note_coriolis_direction", relative=f"V{body}", link=link,
                                sense=self.sense(omega))
 
