@@ -370,14 +370,17 @@ def _read(note: Writer, written: str) -> float:
 
 
 def reproducing(note: Writer, values: list[float], least: list[int], result: str, digits: int,
-                combine) -> tuple[list[str], int]:
+                combine, delays: list[int] | None = None) -> tuple[list[str], int]:
     """``values`` written for a formula whose printed arithmetic, ``combine`` of them as written, must give the result
     as written (``result``, to ``digits`` significant digits): each to its ``least`` significant digits, all a digit
     more at a time until it does (1356.4/0.425 printed = 3191.5, not the −3191.7 found: 1356.35/0.42496).  Also the
     digits added, for the formulas that give these values in turn."""
     extra = 0
     while True:
-        written = [note.n(value, least[index] + extra) for index, value in enumerate(values)]
+        # ``delays``: how many digits the others gain before a value gains its first (a sum's small term needs a
+        # digit more only once the largest reaches its last place), else none: all grow at once.
+        written = [note.n(value, least[index] + max(0, extra - (delays[index] if delays else 0)))
+                   for index, value in enumerate(values)]
         try:
             if note.n(combine(*(_read(note, text) for text in written)), digits) == result:
                 return written, extra
@@ -394,9 +397,19 @@ def _summed(note: Writer, moments: list[float], result: str, solve, digits: int 
     if not moments:
         return ""
     signs = [-1.0 if moment < 0 else 1.0 for moment in moments]
-    written, _ = reproducing(note, [abs(moment) for moment in moments], [5] * len(moments), result, digits,
-                             lambda *sizes: solve(sum(sign * size for sign, size in zip(signs, sizes, strict=True))))
+    sizes = [abs(moment) for moment in moments]
+    # A sum is as exact as its terms' last decimal place, not their digits: a digit more is asked of the largest
+    # term, and of a smaller one only down to the same place (1.303545 + 0.0024154, not + 0.002415376).
+    largest = max(_order(size) for size in sizes)
+    written, _ = reproducing(note, sizes, [5] * len(sizes), result, digits,
+                             lambda *printed: solve(sum(sign * size for sign, size in zip(signs, printed, strict=True))),
+                             delays=[largest - _order(size) for size in sizes])
     return "".join(f" {'−' if sign < 0 else '+'} {size}" for sign, size in zip(signs, written, strict=True))
+
+
+def _order(value: float) -> int:
+    """The place of a number's first digit: 2 for 258.06, −3 for 0.0024."""
+    return math.floor(math.log10(value)) if value > 0 else 0
 
 
 def _polygon_sums(note: Writer, group) -> str:
