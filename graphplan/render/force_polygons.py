@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
@@ -56,7 +57,7 @@ from .labels import (
     text_box,
 )
 from .numerals import significant
-from .plans import RUN_ON_MM, ZERO_MM, too_short_lines
+from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, too_short_lines
 from .primitives import (
     Arrow,
     Circle,
@@ -160,9 +161,39 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
     # One a line: broken where it runs over the polygon's width, a sum broke before its "+ R14n".
     told = wrapped(unnamed, per_line=1)
     under = [text["polygon_unnamed"].format(sides=told[0]), *told[1:]] if told else []
-    caption = (text["force_polygon_title"], *group.polygon.equations,
+    caption = (text["force_polygon_title"], *group.polygon.equations, *_sums(group),
                text["force_scale"].format(value=format_scale(scale)), *apart, *under)
     return Drawing(f"polygon-{key}", layers, caption, run_on=short_run_on(short, apart, text, after=len(under)))
+
+
+def _sums(group: GroupForces) -> list[str]:
+    """``ΣF2 = R32``, ``ΣF4 = G4 + Fu4 + R54``: what each ΣF of the polygon's equations that holds a reaction lays
+    off, as the note gives every ΣF after the same equations.  A ΣF sums the reactions later groups hand back to its
+    link with the link's own loads: the crank-rocker's "ΣF2 + R12 = 0" alone named no R32, which its polygon draws
+    beside R12.  A ΣF of the link's own loads alone (G3, Fu3, which the polygon names where it draws them) is read
+    as the groups' equations have always been read: spelt out too, it took the double rocker's tight A2 force sheet
+    a line more and a sheet more.
+
+    As many sums a line as the equations' width holds at the usual lettering, so that a line breaks between sums,
+    not inside one, and the sums widen no field: at the least caption width the Scotch yoke's group polygon widened
+    its row, which an A2 no longer held across.  Symbols alone, they are set off by the Latin semicolon in every
+    language, as a Chinese caption's lines without Chinese words are."""
+    sums = []
+    for link in dict.fromkeys(int(found) for found in re.findall(r"ΣF(\d+)", group.polygon.equation)):
+        names = [load.name for load in group.loads if load.link == link and load.is_force and load.force != 0]
+        # A reaction, R32 of link 3 on link 2, is the one force of a ΣF that comes from another link through a pair.
+        if any(name.startswith("R") for name in names):
+            sums.append(f"ΣF{link} = {' + '.join(names)}")
+    if not sums:
+        return []
+    reach = min(max(text_width(equation, CAPTION_SIZE) for equation in group.polygon.equations), CAPTION_WIDTH_MM)
+    lines: list[str] = []
+    for item in sums:
+        if lines and text_width(f"{lines[-1]}; {item}", CAPTION_SIZE) <= reach:
+            lines[-1] += f"; {item}"
+        else:
+            lines.append(item)
+    return [f"{line};" for line in lines[:-1]] + lines[-1:]
 
 
 def too_short_to_draw(force: complex, scale: float) -> bool:
