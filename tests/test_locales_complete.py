@@ -25,11 +25,12 @@ from graphplan.cli import main
 
 SVG = "{http://www.w3.org/2000/svg}"
 FIXTURE = Path(__file__).parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
-# Written alike in every language: functions (Russian's arctg among them), Rij (the reaction of link i on link j),
-# the Latin subscripts of ωmax, Jrot, Mcl and the like, and the unit rad and r/min that Chinese texts write in Latin
-# letters, as GB 3100 has them; and a name Chinese gives in Latin after its transcription, 克洛斯（Kloss）.
-ALIKE = frozenset({"Rij", "sin", "cos", "tan", "arctan", "arctg", "max", "min", "rot", "mot", "rad", "Wmax", "Mmax",
-                   "Jrot", "Mcl", "Jcl", "mpmath", "Kloss"})
+# Written alike in every language: functions (Russian's arctg among them), Rij (the reaction of link i on link j;
+# Rji, its opposite; Rijn, its normal component), the Latin subscripts of ωmax, Jrot, Mcl and the like, and the
+# unit rad and r/min that Chinese texts write in Latin letters, as GB 3100 has them; and a name Chinese gives in
+# Latin after its transcription, 克洛斯（Kloss）.
+ALIKE = frozenset({"Rij", "Rji", "Rijn", "sin", "cos", "tan", "arctan", "arctg", "max", "min", "rot", "mot", "rad",
+                   "Wmax", "Mmax", "Jrot", "Mcl", "Jcl", "mpmath", "Kloss"})
 WORD = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z_]{3,}(?![A-Za-z_])")
 # matplotlib's mathtext ($\mathdefault{10^{-1}}$), the figures' file names and a scene table's key ([measured] forces).
 NOT_PROSE = re.compile(r"\$[^$]*\$|[\w.-]+\.(?:svg|png|pdf|csv|md|json|tex|toml)\b|\[[\w.]+\]\s*\w+")

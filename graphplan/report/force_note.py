@@ -47,12 +47,15 @@ class Writer(SectionWriter, Protocol):
     def enclosed(self, number: str) -> str: ...
     def letter(self, plan: Plan, letter: str) -> str: ...
     def segment(self, plan: Plan, start: str, end: str) -> str: ...
+    def reactions_named(self) -> str: ...
 
 
 def forces_section(note: Writer, section: int) -> None:
     """Each plan position's force analysis, then the balancing load over the cycle where the scene asks for it."""
     note.heading(2, note.t("note_forces"), section)
-    note.para(note.t("note_forces_intro", gravity=note.n(note.analysis.scene.gravity)))
+    intro = note.t("note_forces_intro", gravity=note.n(note.analysis.scene.gravity))
+    named = note.reactions_named()
+    note.para(f"{intro} {named}" if named else intro)
     _load_diagrams(note)
     number = 0
     for plan in note.analysis.plans:
@@ -563,7 +566,7 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
             arm = note.on_plan(term.arm / drawn_at) if term.image else "—"
             force = note.n(abs(term.force)) if term.image else "—"
             rows.append([term.name, point, force, arm, note.n(moment_mm)])
-        note.para(note.text["note_lever_intro"])
+        note.para(note.t("note_lever_intro", sign=note.text["note_lever_sign"]))
         for term in lever.terms:
             if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
                 note.para(note.t("note_lever_block", name=term.name, link=term.link))

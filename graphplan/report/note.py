@@ -29,6 +29,7 @@ from __future__ import annotations
 import cmath
 import contextlib
 import datetime
+import functools
 import itertools
 import math
 import re
@@ -167,6 +168,8 @@ class _Note:
     lever_scales: Mapping[str, float] = field(default_factory=dict)
     # The headings of the diagrams each part of a figure shows (``dynamics-2.svg``), named in its caption.
     shown_in_parts: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    # The symbols a sentence has said what they are (A4, lCA4), each defined once, where it is first used.
+    defined: set[str] = field(default_factory=set)
 
     def __post_init__(self) -> None:
         if self.analysis is not None:
@@ -231,9 +234,66 @@ class _Note:
         return self.text["comma"] + self.sense(value) if self.n(value) != "0" else ""
 
     def para(self, *lines: str) -> None:
+        definitions = self.definitions(lines)
+        if definitions:
+            self.para(definitions)
         if self.scene.locale == "zh":
             lines = tuple(map(set_close, lines))
         self.lines += [*lines, ""]
+
+    @functools.cached_property
+    def coincident_names(self) -> dict[str, tuple[str, int]]:
+        """The points the plans' equations name after a link under another link's pin or on a guide (A3, A4, E1),
+        each with that pin and the link: name → (pin, link).  A textbook says once what such a point is."""
+        if self.analysis is None:
+            return {}
+        names = {name: (pin, link) for group in self.mechanism.groups
+                 for name, pin, _, link in group.coincident_points()}
+        for pp in self.analysis.plans:
+            places = _places(pp)
+            for plan in (pp.velocity, pp.acceleration):
+                for step in plan.steps:
+                    for name in _guide_points(step.equation):
+                        match = re.fullmatch(r"(.+?)(\d+)", name)
+                        if name not in places and match and match.group(1) in places:
+                            names[name] = (match.group(1), int(match.group(2)))
+        return names
+
+    def definitions(self, lines: Sequence[str]) -> str:
+        """The sentences that say what a coincident point (A4) or a length to one (lCA4) is, for each that ``lines``
+        name and no earlier paragraph has defined: a symbol is defined where it is first used."""
+        if not self.coincident_names:
+            return ""
+        text = "\n".join(lines)
+        found: list[tuple[int, str]] = []
+        for name, (pin, link) in self.coincident_names.items():
+            if name in self.defined:
+                continue
+            at = re.search(rf"{re.escape(name)}(?!\d)", text)
+            if at is None:
+                continue
+            key = "note_coincident_frame_point" if link == self.frame else "note_coincident_point"
+            found.append((at.start(), self.t(key, name=name, point=pin, link=link)))
+            self.defined.add(name)
+        for name in self.coincident_names:
+            for match in re.finditer(rf"l([{CAPITALS}][a-z]?\d*?)({re.escape(name)})(?!\d)|"
+                                     rf"l({re.escape(name)})([{CAPITALS}][a-z]?\d*)(?![\d{CAPITALS}])", text):
+                start, end = (match.group(1), match.group(2)) if match.group(1) else (match.group(3), match.group(4))
+                length = match.group(0)
+                if length in self.defined:
+                    continue
+                found.append((match.start(), self.t("note_length_to_coincident", length=length, start=start,
+                                                    end=end)))
+                self.defined.add(length)
+        return " ".join(sentence for _, sentence in sorted(found))
+
+    def reactions_named(self) -> str:
+        """What Rij and its components are, the first time the note names a reaction (the error tables' or the
+        force analysis'); nothing after."""
+        if "Rij" in self.defined:
+            return ""
+        self.defined.add("Rij")
+        return self.text["note_reactions_named"]
 
     def heading(self, level: int, title: str, number: object = None) -> None:
         """``number`` the section's ("3.1"), written the locale's way: GOST 2.105 and GB/T 7713 put no point after it."""
@@ -1336,7 +1396,9 @@ class _Note:
         intro += f" {undefined}" if undefined else ""
         others = epsilons_of_others(self.analysis)
         intro += f" {others}" if others else ""
-        self.para(f"{intro} {reactions_intro(self.analysis, in_note=True)}" if has_reactions(self.analysis) else intro)
+        if has_reactions(self.analysis):
+            intro += f" {reactions_intro(self.analysis, in_note=True)} {self.reactions_named()}".rstrip()
+        self.para(intro)
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))
