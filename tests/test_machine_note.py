@@ -118,8 +118,9 @@ def test_a_flywheel_from_load_diagrams_alone_gets_the_published_answer_in_its_no
 def test_the_sections_follow_one_another_numbered_and_the_note_may_be_asked_for_alone(tmp_path):
     out, note = note_of(tmp_path, PRESS + ROTOR + MOUNTS, extra=["--only", "note", "--format", "svg,docx"])
     headings = re.findall(r"^## (\d)\. (.+)$", note, flags=re.MULTILINE)
+    # The conclusions last, as every note ends (the flywheel the dynamics sized).
     assert headings == [("1", "Dynamics of the machine"), ("2", "Balancing of the rotor"),
-                        ("3", "Vibration from the rotating unbalance")]
+                        ("3", "Vibration from the rotating unbalance"), ("4", "Conclusions")]
     assert sorted(path.name for path in out.iterdir() if path.name != WRITTEN) == ["note.docx", "note.html", "note.md", "note.tex",
                                                            "results.json"]
 
@@ -133,8 +134,9 @@ def test_a_linkages_note_gains_the_rotor_and_the_mounts_after_its_own_sections(t
     note = (out / "note.md").read_text(encoding="utf-8")
     numbers = [int(number) for number in re.findall(r"^## (\d+)\. ", note, flags=re.MULTILINE)]
     assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) >= 4
-    assert re.findall(r"^## \d+\. (.+)$", note, flags=re.MULTILINE)[-2:] == ["Balancing of the rotor",
-                                                                       "Vibration from the rotating unbalance"]
+    assert re.findall(r"^## \d+\. (.+)$", note, flags=re.MULTILINE)[-3:] == ["Balancing of the rotor",
+                                                                       "Vibration from the rotating unbalance",
+                                                                       "Conclusions"]
 
 
 @pytest.mark.parametrize("locale", ["ru", "zh"])

@@ -48,6 +48,7 @@ class Writer(SectionWriter, Protocol):
     def letter(self, plan: Plan, letter: str) -> str: ...
     def segment(self, plan: Plan, start: str, end: str) -> str: ...
     def reactions_named(self) -> str: ...
+    found: dict[str, object]
 
 
 def forces_section(note: Writer, section: int) -> None:
@@ -70,6 +71,10 @@ def forces_section(note: Writer, section: int) -> None:
         note.heading(3, note.t("note_cycle", load=load), f"{section}.{number}")
         note.captioned(note.t("note_cycle_table", load=load, name=name, convention=_convention(note, name)),
                        force_report.cycle_lines(note.analysis, note.mark))
+        cycle = note.analysis.cycle
+        if cycle is not None and not cycle.locked and cycle.without_friction != 0 and not cycle.loads_drive:
+            # As the sentence on the cycle's works below writes η.
+            note.found["efficiency"] = force_report.number(cycle.efficiency, 4, note.mark)
         for sentence in [*force_report.cycle_notes(note.analysis),
                          *force_report.locked_between_lines(note.analysis, note.mark),
                          *force_report.cycle_efficiency_lines(note.analysis, note.mark)]:
@@ -538,6 +543,8 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
     name, unit = force_report.balancing_symbol(analysis)
     driver = note.mechanism.driver
     polygons = plan.forces.balancing
+    found = {"number": plan.number, "name": name, "unit": unit, "polygons": note.n(polygons, 6)}
+    note.found.setdefault("balancing", []).append(found)
     # The sign convention with the value: the dynamics' reduced moments, signed by their power, stand beside Mb.
     note.para(note.t("note_balancing_polygons", name=name, value=note.n(polygons, 6), unit=unit,
                      convention=_convention(note, name),
@@ -602,6 +609,7 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
         difference = lever.difference_percent(polygons)
         note.para(note.t("note_lever_difference", name=name, lever=note.n(lever.balancing, 6),
                          polygons=note.enclosed(note.n(polygons, 6)), delta=note.n(difference, 3)))
+        found["lever"], found["delta"] = note.n(lever.balancing, 6), note.n(difference, 3)
     note.captioned(note.t("note_balancing_table", load=balancing_load(note.mechanism, text), name=name,
                           number=plan.number),
                    force_report.balancing_lines(analysis, plan, note.mark))

@@ -39,6 +39,7 @@ class Writer(Protocol):
     text: Mapping[str, str]
     mark: str
     scene: Scene
+    found: dict[str, object]
 
     def t(self, key: str, **values: object) -> str: ...
     def n(self, value: float, digits: int = 5) -> str: ...
@@ -162,6 +163,7 @@ def _flywheel(note: Writer, flywheel, model) -> None:
                for name, value in flywheel_numbers(model, flywheel)._asdict().items()}
     speeds = {"high": numbers["omega_max"], "low": numbers["omega_min"], "high_angle": numbers["angle_max"],
               "low_angle": numbers["angle_min"]}
+    note.found["flywheel"] = {"needed": flywheel.inertia > 0, "delta": numbers["delta"], "inertia": numbers["required"]}
     if flywheel.inertia <= 0:
         note.para(note.t("note_dyn_no_flywheel", delta=numbers["delta"], required=numbers["required"],
                          reached=note.n(flywheel.reached, 4), **speeds))

@@ -59,6 +59,7 @@ from .tables import (
     epsilons_of_others,
     error_table_lines,
     has_reactions,
+    largest_errors,
     measured_bound,
     measured_velocity_plans,
     reactions_intro,
@@ -170,6 +171,8 @@ class _Note:
     shown_in_parts: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     # The symbols a sentence has said what they are (A4, lCA4), each defined once, where it is first used.
     defined: set[str] = field(default_factory=set)
+    # What the sections found, as they wrote it, for the conclusions to sum up in the same numbers.
+    found: dict[str, object] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if self.analysis is not None:
@@ -392,6 +395,47 @@ class _Note:
 
             section += 1
             vibration_section(self, section, self.scene.vibration, steady_state(self.scene.vibration))
+        self.conclusions(section + 1)
+
+    def conclusions(self, section: int) -> None:
+        """The note's last section, as a course project's ends: what the sections before found, each in the words
+        and numbers its section wrote (``found``), only those the note has."""
+        found = self.found
+        items = []
+        if "structure" in found:
+            items.append(self.t("note_conclusion_structure", **found["structure"]))
+        if "ratio" in found:
+            items.append(self.t("note_conclusion_ratio", ratio=found["ratio"]))
+        if "errors" in found:
+            for key, largest in zip(("note_conclusion_velocity_errors", "note_conclusion_acceleration_errors"),
+                                    found["errors"], strict=True):
+                if largest:
+                    items.append(self.t(key, errors=self.text["comma"].join(self.largest_error(*error)
+                                                                                 for error in largest)))
+        for balancing in found.get("balancing", []):
+            key = "note_conclusion_balancing" if "lever" in balancing else "note_conclusion_balancing_polygons"
+            items.append(self.t(key, **balancing))
+        if "efficiency" in found:
+            items.append(self.t("note_conclusion_efficiency", efficiency=found["efficiency"]))
+        if "flywheel" in found:
+            flywheel = found["flywheel"]
+            items.append(self.t("note_conclusion_flywheel" if flywheel["needed"] else "note_conclusion_no_flywheel",
+                                delta=flywheel["delta"], inertia=flywheel["inertia"]))
+        if not items:
+            return
+        self.heading(2, self.t("note_conclusion"), section)
+        self.para(self.t("note_conclusion_lead"))
+        # One sentence down the list, as GOST 2.105 writes a list's items: each after the first lower case, each
+        # ended by a semicolon, the last by a full stop.
+        ends = [self.text["semicolon"].rstrip()] * (len(items) - 1) + [self.text["full_stop"]]
+        self.para(*(f"- {item}{end}" for item, end in zip(items, ends, strict=True)))
+
+    def largest_error(self, source: str, percent: str, quantity: str, position: int) -> str:
+        """``drafting 0.631 % (VE, position 3)``; no quantity named where the error rounds to 0.000, as its table."""
+        name = self.text[f"source_{source}"]
+        if float(percent.replace("−", "-").replace(self.mark, ".")) == 0:
+            return self.t("note_conclusion_error", source=name, percent=percent)
+        return self.t("note_conclusion_error_of", source=name, percent=percent, quantity=quantity, number=position)
 
     def project(self) -> None:
         """Under the title, what the scene's ``[project]`` gives: the designation, who made and checked it, where,
@@ -493,6 +537,7 @@ class _Note:
         self.table(self.t("note_groups_caption"), header, rows, lead="note_groups_lead")
         klass = _ROMAN[max((group.klass for group in mechanism.groups), default=1)]
         self.para(self.t("note_structure_formula", formula=mechanism.structure, klass=klass))
+        self.found["structure"] = {"formula": mechanism.structure, "klass": klass, "w": w}
 
     def kind_name(self, kind: str) -> str:
         """RRR as the locale letters a group (ВВВ in Russian); the Latin letters alongside when they differ."""
@@ -551,6 +596,7 @@ class _Note:
             travels = [self.travel_words(travel) for travel in dimensioned_travels(self.analysis, self.text)]
             travel = f" {self.t('note_strokes_travel', travels=', '.join(travels))}" if travels else ""
             self.para(f"{strokes} {theta}{quicker}{travel}")
+            self.found["ratio"] = self.n(working / idle, 4)
             self.extra_reversals()
         elif self.analysis.positions.working_link_turns:
             self.para(self.t("note_turns_round", link=scene.positions.working.link,
@@ -1403,6 +1449,8 @@ class _Note:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))
             self.slips(plan)
+        self.found["errors"] = (largest_errors(self.analysis, False, self.mark),
+                                largest_errors(self.analysis, True, self.mark))
 
 def _body(term: str) -> tuple[str, str]:
     """``"vBA"`` → ``("v", "BA")``; the component's suffix is dropped."""

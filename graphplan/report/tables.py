@@ -84,6 +84,23 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
     return lines
 
 
+def largest_errors(analysis: Analysis, accelerations: bool, mark: str = ".") -> list[tuple[str, str, str, int]]:
+    """For each source of the plan positions' error tables, the largest error in magnitude of the velocities (or of
+    the ``accelerations``) over every position, as its table writes it: (source, δ, the quantity's symbol, the
+    position), for the note's conclusions."""
+    found: dict[str, tuple[float, str, str, int]] = {}
+    for plan in analysis.plans:
+        for row in plan.errors:
+            if is_reaction(row.quantity) or is_balancing(row.quantity) or not math.isfinite(row.percent):
+                continue
+            if not row.quantity.startswith(("a", "epsilon") if accelerations else ("V", "omega")):
+                continue
+            if row.source not in found or abs(row.percent) > abs(found[row.source][0]):
+                found[row.source] = (row.percent, _percent(row.percent, mark), quantity_symbol(row.quantity),
+                                     plan.number)
+    return [(source, *found[source][1:]) for source in SOURCES if source in found]
+
+
 def _worst(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str:
     """The error of ``source`` largest in magnitude, signed as its row writes it, with its quantity's symbol
     (``−11.820 (ε3)``); none named where it rounds to 0.000 (the construction's), since any row would do."""
