@@ -268,7 +268,8 @@ class _Note:
         if not self.coincident_names:
             return ""
         text = "\n".join(lines)
-        found: list[tuple[int, str]] = []
+        # The points in the order of their names (A3 before A4, as their links), the lengths to them after.
+        found: list[tuple[int, str, str]] = []
         for name, (pin, link) in self.coincident_names.items():
             if name in self.defined:
                 continue
@@ -276,7 +277,7 @@ class _Note:
             if at is None:
                 continue
             key = "note_coincident_frame_point" if link == self.frame else "note_coincident_point"
-            found.append((at.start(), self.t(key, name=name, point=pin, link=link)))
+            found.append((0, name, self.t(key, name=name, point=pin, link=link)))
             self.defined.add(name)
         for name in self.coincident_names:
             for match in re.finditer(rf"l([{CAPITALS}][a-z]?\d*?)({re.escape(name)})(?!\d)|"
@@ -285,10 +286,10 @@ class _Note:
                 length = match.group(0)
                 if length in self.defined:
                     continue
-                found.append((match.start(), self.t("note_length_to_coincident", length=length, start=start,
+                found.append((1, length, self.t("note_length_to_coincident", length=length, start=start,
                                                     end=end)))
                 self.defined.add(length)
-        return " ".join(sentence for _, sentence in sorted(found))
+        return " ".join(sentence for *_, sentence in sorted(found))
 
     def reactions_named(self) -> str:
         """What Rij and its components are, the first time the note names a reaction (the error tables' or the
