@@ -138,15 +138,15 @@ def test_each_polygon_is_drawn_as_large_as_its_field_at_its_own_standard_scale(c
         assert 150.0 / STANDARD_STEP < span <= 150.0 + 1e-9, group.label
         assert group.scale == standard_scale(group.scale)
     assert position.forces.scale == max(group.scale for group in position.forces.groups)
-    # Each polygon's caption gives its μF; the sheet's head gives none, even where they share one: the groups cut
-    # free and the lever draw their arrows at others.
+    # Each polygon's caption gives its μF; the sheet's head gives one only when they share it.
     captions = [item.text for name, items in layers.items() if name.endswith("-caption") and "polygon" in name
                 for item in items if isinstance(item, Text)]
     words = strings(analysis.scene.locale)
     for group in position.forces.groups:
         assert words["force_scale"].format(value=format_scale(group.scale)) in captions
     head = " ".join(item.text for item in layers["sheet-title"] if isinstance(item, Text))
-    assert "μF" not in head
+    shared = len(set(position.forces.group_scales.values())) == 1
+    assert (words["force_scale"].format(value=format_scale(position.forces.scale)) in head) == shared
 
 
 def test_a_scene_s_force_scale_draws_every_polygon_at_it():

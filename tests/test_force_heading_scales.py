@@ -68,10 +68,15 @@ def heading_faults(paths: list[Path]) -> list[str]:
     """Where a heading names a scale no drawing under it on its sheet is drawn at, or leaves out one that is.
 
     A part without a heading stands under that of the part it goes on from where that stands on its sheet.
-    The groups cut free are drawn at μl, the lever at μV; the polygons at μF, which no heading names: the groups'
-    and the lever's arrows are drawn at others (``test_force_sheet_scales_as_drawn``)."""
+    The groups cut free are drawn at μl, the lever at μV, the polygons at μF, which the heading names where they
+    share one (on every sheet their captions give the same)."""
     parts = force_sheet_parts(paths)
     by_key = {(part["page"], part["whole"], part["number"]): part for part in parts}
+    polygon_scales: dict[str, set[str]] = defaultdict(set)
+    for part in parts:
+        for drawing, lines in part["drawings"].items():
+            if drawing.startswith("polygon-"):
+                polygon_scales[part["whole"]].update(scales_in(lines, "F"))
     under: dict[tuple[int, str, int], set[str]] = defaultdict(set)
     for part in parts:
         head = part
@@ -85,6 +90,8 @@ def heading_faults(paths: list[Path]) -> list[str]:
                 under[key].update(scales_in(lines, "l"))
             elif drawing == "lever":
                 under[key].update(scales_in(lines, "V"))
+            elif drawing.startswith("polygon-") and len(polygon_scales[part["whole"]]) == 1:
+                under[key].update(polygon_scales[part["whole"]])
     faults = []
     for part in parts:
         if part["heading"] is None:
@@ -158,7 +165,8 @@ def test_a_lever_going_on_under_the_heading_of_the_part_before_is_named_in_it(sh
 
 def note_heading_faults(folder: Path) -> list[str]:
     """Where the heading over the first of the parts the note shows a force sheet in (``forces_2-1.svg``) names
-    another scale than those of the drawings in that part (μl of its groups cut free, μV of its lever; no μF)."""
+    another scale than those of the drawings in that part: the whole sheet's polygons share a μF where every
+    polygon caption of it gives the same."""
     faults = []
     wholes = [path for path in folder.glob("forces_*.svg") if not re.search(r"-\d+$", path.stem)]
     assert wholes
@@ -166,6 +174,8 @@ def note_heading_faults(folder: Path) -> list[str]:
         parts = sorted(folder.glob(f"{whole.stem}-*.svg"), key=lambda path: int(path.stem.rsplit("-", 1)[1]))
         groups = {path: {group.get("id"): group for group in ElementTree.parse(path).getroot().iter(f"{SVG}g")}
                   for path in (whole, *parts)}
+        polygons = {scale for name, group in groups[whole].items() if name.startswith("polygon-")
+                    and name.endswith("-caption") for scale in scales_in(lines_of(group), "F")}
         for part in parts:
             if "sheet-title" not in groups[part]:
                 continue
@@ -175,6 +185,8 @@ def note_heading_faults(folder: Path) -> list[str]:
                     drawn_at.update(scales_in(lines_of(group), "l"))
                 elif name == "lever-caption":
                     drawn_at.update(scales_in(lines_of(group), "V"))
+                elif name.startswith("polygon-") and name.endswith("-caption") and len(polygons) == 1:
+                    drawn_at.update(polygons)
             heading = lines_of(groups[part]["sheet-title"])
             named = [scale for symbol in "lFV" for scale in scales_in(heading, symbol)]
             if len(heading) > 1 or sorted(named) != sorted(drawn_at):

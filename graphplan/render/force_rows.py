@@ -114,9 +114,8 @@ class Heading:
     drawings that may stand under it, its own and the later parts' (a part
     that goes on on the sheet of the part before stands under that part's
     heading), and once the parts are packed names those that do
-    (:func:`with_scales_line`): the lever alone names μV, not the groups' μl.
-    A force sheet's heading names no μF (:func:`graphplan.render.forces.rows`):
-    its polygons', groups' and lever's arrows each give their own.
+    (:func:`with_scales_line`): the lever alone names μV, not the groups' μl,
+    and a group alone on its sheet not the μF of polygons on the next.
     Where the parts stand is found with every heading measured at all of
     ``scales`` (:attr:`whole_scales`), so that which of them a part names
     moves no drawing: measured at its own, a lever under a shorter heading
@@ -153,7 +152,8 @@ class Heading:
 
 def scales_line(scales: Sequence[tuple[str, str]], names: Sequence[str], comma: str = ", ") -> str:
     """The line of those of ``scales`` (:attr:`Heading.scales`) that the drawings ``names`` (or their layers) are
-    drawn at; empty where none has one of the sheet's (force polygons, whose captions give their μF)."""
+    drawn at; empty where none has one of the sheet's (force polygons each at its own μF, which their captions
+    give)."""
     return comma.join(line for line, start in scales if any(name.startswith(start) for name in names))
 
 

@@ -68,11 +68,11 @@ def rows(sheet: ForceSheet, bodies: MutableMapping[tuple[int, float], Drawing] |
     if sheet.lever is not None:
         drawings.append([lever_drawing(sheet, sheet.lever)])
     text = sheet.text
-    # No μF heads the sheet: its arrows are drawn at several (each polygon's, each group cut free's, the lever's),
-    # and a heading's one μF was read as all of theirs (the crank-rocker's "μF = 20 N/mm", its polygons', over its
-    # groups' arrows at 100 and 200 N/mm); each drawing's caption gives its own.  μV is the lever's: a sheet
-    # without it (forces asked without the lever) names none.
+    # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.  μV is the lever's:
+    # a sheet without it (forces asked without the lever) names none.
     scales = ((text["length_scale"].format(value=format_scale(sheet.length_scale)), "body-"),
+              *([(text["force_scale"].format(value=format_scale(sheet.forces.scale)), "polygon-")]
+                if sheet.forces.one_scale else []),
               *([(sheet.lever_scale_line, "lever")] if sheet.lever is not None else []))
     part_title = sheet.part_title or sheet.title
     return Rows(drawings, Heading(sheet.title, scales, sheet.caption_size, part_title,
