@@ -89,5 +89,5 @@ def test_the_note_gives_theta_and_the_stroke_from_the_dead_centres(tmp_path):
     assert said, "the note gives no θ with K = (180° + θ)/(180° − θ)"
     assert float(said.group(1)) == pytest.approx(theta, rel=1e-4)
     assert float(said.group(2)) == pytest.approx((180.0 + theta) / (180.0 - theta), rel=1e-3)
-    travel = re.search(r"plan of positions: H = ([\d.]+) m\.", note)
+    travel = re.search(r"plan of positions: the stroke H = ([\d.]+) m\.", note)
     assert travel and float(travel.group(1)) == pytest.approx(stroke, rel=1e-3)

@@ -513,8 +513,9 @@ class _Note:
 
         scales, differences = scales_and_differences(of_analysis(self.analysis), self.text)
         self.para(self.t("note_kd_method"))
-        lines = [decimal_marked(line, self.mark) for line in (*scales, *differences)]
-        self.para(*(line + "\\" for line in lines[:-1]), lines[-1])
+        # A paragraph each: a line broken by hand reads run together in the LaTeX note.
+        for line in (*scales, *differences):
+            self.para(decimal_marked(line, self.mark))
 
     def structure(self, section: int) -> None:
         mechanism = self.mechanism
