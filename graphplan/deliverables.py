@@ -348,11 +348,15 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         tell("drawing the plans and the force sheets")
     for plan in analysis.plans:
         if shown:
-            # Laid out on its own, not taken from the sheets' panel: there each plan's caption names its position and
-            # each drawing stands at its field's foot, by the other positions' drawings, which plan_N.svg has none of.
-            sheet = dataclasses.replace(draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration),
-                                        drawings=("mechanism", *shown))
-            layers = plan_layout.layout(sheet)
+            # The sheets' panel only where it is drawn as alone: on the sheets each plan's caption names its position
+            # and each drawing stands at its field's foot, which took the sheets' plan sheet for plan_N.svg.
+            laid_out = _drawn_alone(panels, f"plan-{plan.number}") if len(shown) == 2 else None
+            if laid_out is None:
+                sheet = dataclasses.replace(draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration),
+                                            drawings=("mechanism", *shown))
+                layers = plan_layout.layout(sheet)
+            else:
+                layers = list(laid_out.layers)
             found.append(Drawing(f"plan_{plan.number}", layers))
             found += _plan_note_parts(plan, shown, pieces, layers)
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
