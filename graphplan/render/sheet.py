@@ -296,8 +296,7 @@ def _plans_captioned_apart(panel: Panel, sheet: plan_layout.PlanSheet, text: Map
 
         def captioned(lines: Sequence[str], part: Panel = part, at: tuple[float, float] = caption.items[0].at,
                       rest: Sequence[str] = rest) -> Panel:
-            texts = tuple(replace(item, weight="bold") if k < len(lines) else item
-                          for k, item in enumerate(plan_layout.caption_texts((*lines, *rest), at)))
+            texts = _name_in_bold(plan_layout.caption_texts((*lines, *rest), at), len(lines))
             return replace(part, layers=tuple(Layer("caption", texts) if layer.name == "caption" else layer
                                               for layer in part.layers))
 
@@ -305,7 +304,7 @@ def _plans_captioned_apart(panel: Panel, sheet: plan_layout.PlanSheet, text: Map
         if text_width(name, plan_layout.CAPTION_SIZE, "bold") > room + 1e-6:
             # Broken first: a part is placed in the first of its ways a sheet holds, and on one line it left no room
             # for the part after it.  On one line where only that fits, a line lower.
-            ways.insert(0, captioned(fitted(name, room, plan_layout.CAPTION_SIZE, "bold")))
+            ways.insert(0, captioned(_name_lines(name, room)))
         parts.append(replace(ways[0], alternatives=tuple(ways[1:])))
     return replace(panel, parts=tuple(parts))
 
@@ -341,18 +340,28 @@ def _arranged_naming_position(sheet: plan_layout.PlanSheet, text: Mapping[str, s
             x0, _, x1, _ = unnamed.fields[field]
             # As wide as the caption may be, centred under its field, within the drawing's bounds as they were.
             room = 2 * min((x0 + x1) / 2 - left, right - (x0 + x1) / 2)
-            line = named_lines[field]
-            lines = tuple(fitted(line, room, plan_layout.CAPTION_SIZE, "bold")) \
-                if text_width(line, plan_layout.CAPTION_SIZE, "bold") > room + 1e-6 else (line,)
+            lines = _name_lines(named_lines[field], room)
             captions[attribute] = (*lines, *getattr(sheet, attribute)[1:])
             broken[f"{field}-caption"] = len(lines)
         laid = plan_layout.arrangements(replace(sheet, **captions), (shape,))[0]
         # A caption sets its first line in bold, the drawing's name: the name's every line, where it is broken.
         arranged.append(replace(laid, layers=[
-            replace(layer, items=tuple(replace(item, weight="bold") if k < broken[layer.name] else item
-                                       for k, item in enumerate(layer.items)))
+            replace(layer, items=_name_in_bold(layer.items, broken[layer.name]))
             if broken.get(layer.name, 1) > 1 else layer for layer in laid.layers]))
     return arranged
+
+
+def _name_lines(name: str, room: float) -> tuple[str, ...]:
+    """A plan's caption's name on one line, or broken to ``room`` (mm) where one line is wider."""
+    if text_width(name, plan_layout.CAPTION_SIZE, "bold") > room + 1e-6:
+        return tuple(fitted(name, room, plan_layout.CAPTION_SIZE, "bold"))
+    return (name,)
+
+
+def _name_in_bold(texts: Sequence[Primitive], lines: int) -> tuple[Primitive, ...]:
+    """A caption's ``texts`` with its first ``lines``, the drawing's name, in bold: a caption sets its first line
+    so, and a name broken over lines is every line of it."""
+    return tuple(replace(item, weight="bold") if k < lines else item for k, item in enumerate(texts))
 
 
 def _on_their_captions(arrangement: Arrangement) -> Arrangement:

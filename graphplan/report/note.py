@@ -432,9 +432,10 @@ class _Note:
         self.para(*(f"- {item}{end}" for item, end in zip(items, ends, strict=True)))
 
     def largest_error(self, source: str, percent: str, quantity: str, position: int) -> str:
-        """``drafting 0.631 % (VE, position 3)``; no quantity named where the error rounds to 0.000, as its table."""
+        """``drafting 0.631 % (VE, position 3)``; no quantity named where the error rounds to 0.000, as its table
+        (:func:`~graphplan.report.tables.largest_errors` names none)."""
         name = self.text[f"source_{source}"]
-        if float(percent.replace("−", "-").replace(self.mark, ".")) == 0:
+        if not quantity:
             return self.t("note_conclusion_error", source=name, percent=percent)
         return self.t("note_conclusion_error_of", source=name, percent=percent, quantity=quantity, number=position)
 

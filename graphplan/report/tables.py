@@ -87,7 +87,7 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
 def largest_errors(analysis: Analysis, accelerations: bool, mark: str = ".") -> list[tuple[str, str, str, int]]:
     """For each source of the plan positions' error tables, the largest error in magnitude of the velocities (or of
     the ``accelerations``) over every position, as its table writes it: (source, δ, the quantity's symbol, the
-    position), for the note's conclusions."""
+    position), for the note's conclusions; no symbol where it rounds to 0.000, as :func:`_worst` names none."""
     found: dict[str, tuple[float, str, str, int]] = {}
     for plan in analysis.plans:
         for row in plan.errors:
@@ -98,7 +98,8 @@ def largest_errors(analysis: Analysis, accelerations: bool, mark: str = ".") -> 
             if row.source not in found or abs(row.percent) > abs(found[row.source][0]):
                 found[row.source] = (row.percent, _percent(row.percent, mark), quantity_symbol(row.quantity),
                                      plan.number)
-    return [(source, *found[source][1:]) for source in SOURCES if source in found]
+    return [(source, written, quantity if round(percent, 3) != 0 else "", number)
+            for source in SOURCES if source in found for percent, written, quantity, number in [found[source]]]
 
 
 def _worst(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str:
