@@ -402,7 +402,7 @@ FLOOR = 1e-17
 
 
 def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
-               names: Mapping[str, str] | None = None, own_tag: str = "{tag} (the scene's)") -> None:
+               names: Mapping[str, str] | None = None, own_tag: str = "{tag} (initial data)") -> None:
     """Error against run time of one scene's rows on matplotlib ``axes`` (log-log; filled: accelerations).
 
     A few points are tagged with their drafting precision (in ``millimetre``) or the diagram's N;

@@ -129,7 +129,7 @@ def test_accuracy_is_delivered_on_request_only(tmp_path):
     assert [(row["parameter"], row["scene_precision"]) for row in table if row["method"] == "drafting"] == [
         ("1 mm", "false"), ("0.5 mm", "true"), ("0.25 mm", "false"), ("0.1 mm", "false")]
     note = (out / "accuracy.md").read_text(encoding="utf-8")
-    assert note.startswith("# Точность методов") and "чертёжной точностью 0,5 мм (точность сцены) |" in note  # ru
+    assert note.startswith("# Точность методов") and "чертёжной точностью 0,5 мм (как в исходных данных) |" in note  # ru
     latex = (out / "accuracy.tex").read_text(encoding="utf-8")
     rows = latex.split("\\endlastfoot\n")[1].split("\\end{longtable}")[0].strip().splitlines()
     assert len(rows) == len(table)
@@ -219,8 +219,8 @@ def test_the_scene_s_own_drafting_precision_has_its_row(tmp_path):
     assert all(row["scene_precision"] == "false" for row in table if row["method"] != "drafting")
     (own,) = [row for row in table if row["scene_precision"] == "true"]
     note = (out / "accuracy.md").read_text(encoding="utf-8")
-    assert [line.split(" | ")[0] for line in note.splitlines() if "(the scene's)" in line] == [
-        "| plans read to 0.3 mm (the scene's)"]
+    assert [line.split(" | ")[0] for line in note.splitlines() if "(as in the initial data)" in line] == [
+        "| plans read to 0.3 mm (as in the initial data)"]
 
     scene = graphplan.load(path)
     motion = analyse(scene).motion
@@ -275,8 +275,8 @@ def test_the_scene_s_precision_takes_its_place_among_the_standard_ones_once(prec
 
 
 @pytest.mark.parametrize("own, tags", [
-    ("0.3 mm", {"1 mm", "0.3 mm (the scene's)", "0.1 mm"}),
-    ("1 mm", {"1 mm (the scene's)", "0.1 mm"}),  # a standard precision tagged already: one tag, the scene's
+    ("0.3 mm", {"1 mm", "0.3 mm (initial data)", "0.1 mm"}),
+    ("1 mm", {"1 mm (initial data)", "0.1 mm"}),  # a standard precision tagged already: one tag, the initial data's
 ])
 def test_the_plot_rings_and_tags_the_scene_s_precision(own, tags):
     from matplotlib.figure import Figure
@@ -287,7 +287,7 @@ def test_the_plot_rings_and_tags_the_scene_s_precision(own, tags):
     axes = Figure().subplots()
     draw_study(axes, rows)
     assert {text.get_text() for text in axes.texts} == tags
-    (tag,) = [text for text in axes.texts if "(the scene's)" in text.get_text()]
+    (tag,) = [text for text in axes.texts if "(initial data)" in text.get_text()]
     (mine,) = [row for row in rows if row.own]
     assert tag.xy == (4e-3, mine.stat("acceleration", max))
     (ring,) = [line for line in axes.lines if line.get_gid() == "own-precision"]

@@ -22,7 +22,7 @@ FAMILIES = ("velocity", "acceleration")
 
 
 def method_name(row: Row, text: Mapping[str, str]) -> str:
-    """A row's method as a reader calls it: "plans read to 0.5 mm", "plans read to 0.3 mm (the scene's)",
+    """A row's method as a reader calls it: "plans read to 0.5 mm", "plans read to 0.3 mm (as in the initial data)",
     "kinematic diagrams, N = 48"."""
     if row.method == "drafting":
         precision = row.parameter.removesuffix(" mm").replace(".", text["decimal_mark"])
