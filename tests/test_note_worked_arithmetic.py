@@ -7,6 +7,7 @@ equations' sums (``ΣMC(4) = R34·0.42496 + 9.8121 + … = 0 ⇒ R34 = −1356.3
 
 from __future__ import annotations
 
+import math
 import re
 
 import pytest
@@ -80,8 +81,7 @@ def test_the_force_analysis_s_printed_arithmetic_gives_its_printed_results(tmp_p
 @pytest.mark.parametrize("starter", STARTERS)
 def test_the_plans_worked_out_formulas_give_their_printed_results(tmp_path, capsys, starter):
     """The driving crank's VA = ω2·lOA, aAⁿ = ω2²·lOA, aA^τ = ε2·lOA and each Coriolis acceleration 2·ω·V, with their
-    numbers put in (6.2832²·0.1 gave 3.9479 where 3.9478 was printed), worked out again from the printed numbers.
-    (A reading off a plan, pb·μV with pb as drawn to a hundredth of a millimetre, is not among them.)"""
+    numbers put in (6.2832²·0.1 gave 3.9479 where 3.9478 was printed), worked out again from the printed numbers."""
     scene, out = tmp_path / f"{starter}.toml", tmp_path / "out"
     assert main(["new", starter, "--out", str(scene)]) == 0
     assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", "en"]) == 0
@@ -95,3 +95,33 @@ def test_the_plans_worked_out_formulas_give_their_printed_results(tmp_path, caps
     wrong = [(formula, value) for formula, value, result in formulas
              if abs(value - _number(result, ".")) > _half_unit(result, ".") * (1 + 1e-9)]
     assert not wrong, wrong
+
+
+@pytest.mark.parametrize(("starter", "locale"), [*((starter, "en") for starter in STARTERS), ("crank-rocker", "ru")])
+def test_a_reading_off_a_plan_gives_its_printed_result(tmp_path, capsys, starter, locale):
+    """``VB = pb·μV = 61.27·0.0062832 = 0.38498`` gave 0.38497: the plan's length, printed as drawn to a hundredth of
+    a millimetre, is printed as exactly as the construction's length must be for its product with the stated scale
+    (and, for an ω or ε, its quotient by the link's length) to give the value the note and the tables print."""
+    scene, out = tmp_path / f"{starter}.toml", tmp_path / "out"
+    assert main(["new", starter, "--out", str(scene)]) == 0
+    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", locale]) == 0
+    capsys.readouterr()
+    mark = strings(locale)["decimal_mark"]
+    note = (out / "note.md").read_text(encoding="utf-8")
+    reading = re.compile(r"\w+·μ[Va](?:/l\w+)? = (?P<rest>[^ ]+ = −?[\d.,]+)")
+    formulas = [formula for match in reading.finditer(note) for formula in worked_formulas(match["rest"], mark)]
+    assert len(formulas) >= note.count("·μV = ") > 0, note[:3000]
+    wrong = [(formula, value) for formula, value, result in formulas
+             if abs(value - _number(result, mark)) > _half_unit(result, mark) * (1 + 1e-9)]
+    assert not wrong, wrong
+    # Drawn to a hundredth, and a digit more only where one digit fewer would not give the result: of the two
+    # lengths a digit shorter on either side of the one printed, one at least misses it (the length rounded is one).
+    for formula, _, result in formulas:
+        length, rest = re.match(rf"(\d+(?:{re.escape(mark)}\d+)?)(.*) = ", formula).groups()
+        decimals = len(length.split(mark)[1])
+        assert decimals >= 2, formula
+        if decimals > 2:
+            unit = 10.0 ** -(decimals - 1)
+            sides = [math.floor(_number(length, mark) / unit) * unit, math.ceil(_number(length, mark) / unit) * unit]
+            worked = [eval(f"{side:.{decimals - 1}f}" + rest.replace(mark, ".").replace("·", "*")) for side in sides]
+            assert any(abs(value - _number(result, mark)) > _half_unit(result, mark) for value in worked), formula

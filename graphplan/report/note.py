@@ -195,6 +195,29 @@ class _Note:
         """A length on a drawing, to a hundredth of a millimetre."""
         return f"{value:.2f}".replace(".", self.mark)
 
+    def reading_factors(self, millimetres: float, scale: float, result: str, length: float | None = None) -> tuple[str, ...]:
+        """A plan's length and its scale (and the link's length an ω or ε is divided by) as a reading writes them:
+        the scale and the link's length as the note states them, the plan's length to a hundredth of a millimetre as
+        drawn, and digits more where the printed arithmetic would not give the printed ``result`` (61.27·0.0062832 =
+        0.38497, not the 0.38498 found: 61.273·0.0062832); most need a digit or two, one just on a rounding boundary
+        more (41.26696·0.05 = 2.0633, 41.267·0.05 = 2.0634)."""
+        # The length first, then the scale too: a scale chosen from a pole's length (2.975/150 = 0.0198333) is
+        # rounded in its sentence, and no digits of the length make up for it (46.5409·0.019833 = 0.92305, not 0.92306).
+        tries = [(f"{millimetres:.{decimals}f}".replace(".", self.mark), self.n(scale, digits),
+                  *([self.n(length, digits)] if length is not None else []))
+                 for digits in (5, 6, 7) for decimals in range(2, 7)]
+        if "·10" in result:  # a power of ten: no digits of the length make it read back, and none are added
+            return tries[0]
+        # Read as the reader reads it: to half a unit of the result's last printed digit (1.36 for 1.35995).
+        target = float(result.replace(self.mark, "."))
+        decimals_printed = len(result.split(self.mark)[1]) if self.mark in result else 0
+        for written in tries:
+            read = [float(text.replace(self.mark, ".")) for text in written]
+            worked = read[0] * read[1] / (read[2] if length is not None else 1.0)
+            if abs(worked - target) <= 0.5 * 10.0 ** -decimals_printed * (1 + 1e-9):
+                return written
+        return tries[0]
+
     def on_plan(self, millimetres: float) -> str:
         """A vector's length on its plan, and where the plan leaves it out as too short to draw, that it is not
         drawn: the reader measuring the plan finds no such segment on it."""
@@ -1317,16 +1340,17 @@ class _Note:
         segment = self.segment(plan, *reading.segment)
         millimetres = reading.millimetres(pp.plans)
         value = reading.value(pp.plans)
-        scale = self.n(plan.scale)
         if reading.quantity.startswith(("omega", "epsilon")):
             link = int(re.sub(r"\D", "", reading.quantity))
             angular = reading.quantity.startswith("omega")
             unit = self.text["unit_rad_per_s" if angular else "unit_rad_per_s2"]
             name, length = self.angular_names(pp, plan, reading, link)
             through = f"{name}/{length} = " if name else ""
+            result = self.n(abs(value))
+            drawn, scale, arm = self.reading_factors(millimetres, plan.scale, result, reading.length)
             text = (f"{quantity_symbol(reading.quantity)} = {through}{segment}·{symbol}/{length} = "
-                    f"{self.mm(millimetres)}{self.text['times']}{scale}/{self.n(reading.length)} = "
-                    f"{self.n(abs(value))} {unit}{self.with_sense(value)}{self.short_mark(millimetres, segment)}")
+                    f"{drawn}{self.text['times']}{scale}/{arm} = "
+                    f"{result} {unit}{self.with_sense(value)}{self.short_mark(millimetres, segment)}")
             if not angular:
                 # Accelerated or decelerated only where both ω and ε are more than the plans' rounding: an ε of
                 # 1e-16 where it is nought (a lever passing its greatest ω) is written 0 and has no sense. Every ε
@@ -1339,8 +1363,10 @@ class _Note:
                     text += self.text["semicolon"] + self.t(key, link=link)
             return text
         unit = self.text["unit_m_per_s" if plan.kind == "velocity" else "unit_m_per_s2"]
-        return (f"{reading.quantity} = {segment}·{symbol} = {self.mm(millimetres)}{self.text['times']}{scale} = "
-                f"{self.n(abs(value))} {unit}{self.short_mark(millimetres, segment)}")
+        result = self.n(abs(value))
+        drawn, scale = self.reading_factors(millimetres, plan.scale, result)
+        return (f"{reading.quantity} = {segment}·{symbol} = {drawn}{self.text['times']}{scale} = "
+                f"{result} {unit}{self.short_mark(millimetres, segment)}")
 
     def epsilon_of_another(self, pp: PlanPosition, link: int, other: int) -> str:
         """``ε3 = ε4 = …``: link ``link`` turns with link ``other``, whose tangential component is the only one the
