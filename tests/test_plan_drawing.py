@@ -655,6 +655,26 @@ def test_a_frame_guide_is_hatched_along_its_block_s_travel_away_from_the_links()
     assert sides == {-1.0, 1.0}, "the crank turns above the guide in one plan position and below it in the other"
 
 
+
+def test_a_scotch_yoke_s_guide_is_hatched_where_its_rod_always_runs_not_over_the_crank():
+    # The yoke's guide runs through the crank's pivot O, and the block's travel (±r about O) over it: a ground
+    # hatched along the travel crossed the crank circle.  The rod B–P (0.40 m) covers the guide's line from r
+    # above O to 0.40 − r at every position; the ground stands there, 8 mm clear of the slot and the rod's end.
+    # r = 0.075 m, μl = 0.002 m/mm: 37.5 mm and 200 mm on the paper.
+    analysis = analysed("scotch_yoke")
+    r, rod, block = 37.5, 200.0, 8.0
+    for plan in analysis.plans:
+        layers = layers_of(plan_sheet(analysis, plan.index))
+        (pivot,) = [item.centre for item in layers["mechanism-frame"] if isinstance(item, Circle)]
+        ground = [item for item in layers["mechanism-frame"] if isinstance(item, Polyline) and len(item.points) == 2
+                  and all(abs(abs(x - pivot[0]) - 2.5) < 1e-6 for x, _ in item.points)]
+        assert len(ground) == 1, f"position {plan.number}: one ground line beside the vertical guide"
+        reach = sorted(abs(y - pivot[1]) for _, y in ground[0].points)
+        assert reach[0] == pytest.approx(r + block), f"position {plan.number}: the ground clear of the crank circle"
+        assert reach[1] == pytest.approx(rod - r - block), f"position {plan.number}: short of the rod's lowest end"
+        signs = {math.copysign(1.0, y - pivot[1]) for _, y in ground[0].points}
+        assert len(signs) == 1, f"position {plan.number}: the ground on one side of O, the rod's"
+
 def _on_line(polyline, through, direction):
     return all(abs(((complex(*point) - through) / direction).imag) < 1e-6 for point in polyline.points)
 

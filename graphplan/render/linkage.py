@@ -204,6 +204,43 @@ def frame_guide(start: complex, end: complex, u: complex, length_scale: float, p
     return [*hatching(paper(first + off), paper(last + off), side=side), Polyline((paper(start), paper(end)), THIN)]
 
 
+def guide_bushing(mechanism: Mechanism, motion: Motion, slider: int, joint: str, u: complex,
+                  length_scale: float) -> tuple[complex, complex] | None:
+    """Where a frame guide's ground is hatched (m) when its slider's travel runs over a frame pivot that a link
+    turns about (a Scotch yoke's vertical guide through the crank's pivot O): over the stretch of the guide's
+    line that the sliding link, a rod, covers at every position, clear of its travel by the ground's margin,
+    where a bushing can hold it.  None where no pivot stands in the travel, or the link is no rod long enough:
+    the ground spans the travel, as under a block."""
+    track = np.atleast_1d(motion.points[joint].r)
+    origin = complex(track[0])
+    travel = ((track - origin) * np.conj(u)).real
+    block = GROUND_MARGIN_MM * length_scale
+    pivots = {name: r for name, r in mechanism.scene.frame_points.items() if name in _pivots(mechanism)}
+    crossed = [name for name, r in pivots.items()
+               if abs(((r - origin) * np.conj(u)).imag) < block
+               and travel.min() < ((r - origin) * np.conj(u)).real < travel.max()]
+    if not crossed:
+        return None
+    # The stretch covered at every position: from the highest of the rod's lowest ends to the lowest of its highest.
+    on_line = []
+    for name in sorted(mechanism.fixed_on.get(slider, ())):
+        if name not in motion.points:
+            continue
+        offsets = (np.atleast_1d(motion.points[name].r) - origin) * np.conj(u)
+        if np.all(np.abs(offsets.imag) < 1e-9 * max(float(np.abs(offsets).max()), 1.0)):
+            on_line.append(offsets.real * np.ones_like(travel))
+    if len(on_line) < 2:
+        return None
+    low, high = float(np.max(np.min(on_line, axis=0))), float(np.min(np.max(on_line, axis=0)))
+    # Beyond the travel on either side, by the margin the slot or block at the joint takes, and short of the rod's
+    # end by as much: the longer stretch.
+    stretches = [(max(low, travel.max() + block), high - block), (low + block, min(high, travel.min() - block))]
+    low, high = max(stretches, key=lambda stretch: stretch[1] - stretch[0])
+    if high - low < 2.0 * block:
+        return None
+    return origin + low * u, origin + high * u
+
+
 def frame_points_along(mechanism: Mechanism, through: complex, u: complex) -> list[float]:
     """How far along the line through ``through`` along ``u`` (m) each frame point on it lies: a guide is drawn
     on to them, so that the point its scene names stands on it."""

@@ -38,6 +38,7 @@ from .linkage import (
     frame_pivots,
     frame_points_along,
     ground_side,
+    guide_bushing,
     links_at,
     loose_frame_points,
     outline_points,
@@ -267,6 +268,11 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
             travel = ((np.atleast_1d(motion.points[slide.joint].r) - r) * u.conjugate()).real
             margin = GROUND_MARGIN_MM * sheet.length_scale
             ground = (r + max(first, travel.min() - margin) * u, r + min(last, travel.max() + margin) * u)
+            bushing = guide_bushing(mechanism, motion, slide.slider, slide.joint, u, sheet.length_scale)
+            if bushing is not None:
+                ground = bushing
+                ends = [((end - r) * u.conjugate()).real for end in bushing]
+                first, last = min(first, *ends), max(last, *ends)
             side = ground_side((where(name) for name in motion.points), r, u)
             frame.extend(frame_guide(r + first * u, r + last * u, u, sheet.length_scale, paper, ground, side))
     frame.extend(frame_pivots(mechanism, paper))

@@ -46,6 +46,7 @@ from .linkage import (
     frame_pivots,
     frame_points_along,
     ground_side,
+    guide_bushing,
     links_at,
     loose_frame_points,
     outline_points,
@@ -245,7 +246,10 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
         travel = (float(along.min()) - margin, float(along.max()) + margin)
         reach = frame_points_along(mechanism, origin, u)
         first, last = min([travel[0], *reach]), max([travel[1], *reach])
-        ground = (origin + travel[0] * u, origin + travel[1] * u)
+        ground = (guide_bushing(mechanism, motion, slide.slider, slide.joint, u, plan.length_scale)
+                  or (origin + travel[0] * u, origin + travel[1] * u))
+        ends = [((end - origin) * u.conjugate()).real for end in ground]
+        first, last = min(first, *ends), max(last, *ends)
         links = (complex(r) for point in motion.points.values() for r in np.atleast_1d(point.r))
         items.extend(frame_guide(origin + first * u, origin + last * u, u, plan.length_scale, paper, ground,
                                  side=ground_side(links, origin, u)))
