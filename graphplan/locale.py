@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import tomllib
 from collections.abc import Mapping
 from functools import cache
@@ -48,3 +49,30 @@ class Count(int):
         if 2 <= last <= 4 and not 12 <= last_two <= 14:
             return forms[1]
         return forms[2]
+
+
+# The loads the analysis itself adds are named in Latin inside (results.json, errors.csv and the scene's keys keep
+# those names): the inertia force Fu3 and moment Mu3, the shift hu3 of an inertia force displaced off the centre of
+# mass, the balancing moment Mb or force Fb (Mb0 without friction) and the balancing force's arm hb on the lever.
+# A reader sees them as the locale's textbook writes them (a Russian one: Fи3, Mи3, hи3, Mу, Fу, hу), each prefix
+# spelled by the locale's own key.  A prefix counts only where the name's index follows it (a digit, the lever's
+# primes for a couple's two forces, a slide's ·x) or the name ends: a load of the scene is F4 or M4.1, never these.
+_LOAD_SYMBOL_KEYS = {"Fu": "symbol_inertia_force", "Mu": "symbol_inertia_moment", "hu": "symbol_inertia_shift",
+                     "Mb": "symbol_balancing_moment", "Fb": "symbol_balancing_force", "hb": "symbol_balancing_arm"}
+_LOAD_SYMBOL = re.compile(r"(Fu|Mu|hu|Mb|Fb|hb)(?=[\d′″·]|$)")
+
+
+def load_symbol(name: str, text: Mapping[str, str]) -> str:
+    """The load named ``name`` inside (Fu3, Mu3′, Mb0) as ``text``'s locale writes it (Fи3, Mи3′, Mу0 in Russian);
+    any other name as it is."""
+    found = _LOAD_SYMBOL.match(name)
+    return text[_LOAD_SYMBOL_KEYS[found[1]]] + name[found.end():] if found else name
+
+
+# Within a formula the records compose (a polygon's ΣF2 + Fb + R12 = 0), the same names as whole words.
+_LOAD_SYMBOL_IN_FORMULA = re.compile(r"(?<![^\W_])(Fu|Mu|hu|Mb|Fb|hb)(?=[\d′″·]|(?![^\W_]))")
+
+
+def load_symbols_in(formula: str, text: Mapping[str, str]) -> str:
+    """``formula`` with every load the analysis adds named as :func:`load_symbol` names it."""
+    return _LOAD_SYMBOL_IN_FORMULA.sub(lambda found: text[_LOAD_SYMBOL_KEYS[found[1]]], formula)

@@ -10,7 +10,7 @@ import math
 import re
 from collections.abc import Callable, Mapping
 
-from .locale import Count
+from .locale import Count, load_symbol
 from .mechanism import Mechanism
 from .statics import delivers_power, rounded_zero, turned_round
 
@@ -28,10 +28,11 @@ def raised(text: str) -> str:
 
 
 def balancing_symbol(mechanism: Mechanism, text: Mapping[str, str]) -> tuple[str, str]:
-    """The balancing load's symbol and its unit in ``text``'s locale: (Mb, N·m) for a crank, (Fb, N) for a slider."""
+    """The balancing load's symbol and its unit in ``text``'s locale: (Mb, N·m) for a crank, (Fb, N) for a slider;
+    in Russian (Mу, Н·м) and (Fу, Н).  The symbol is for the reader: what the load is, ask the driver's kind."""
     if mechanism.driver.kind == "crank":
-        return "Mb", text["newton_metre"]
-    return "Fb", text["newton"]
+        return load_symbol("Mb", text), text["newton_metre"]
+    return load_symbol("Fb", text), text["newton"]
 
 
 def balancing_load(mechanism: Mechanism, text: Mapping[str, str], lower: bool = False) -> str:

@@ -34,6 +34,7 @@ from ..geometry import perpendicular_foot
 from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
 from ..loads import external_names
+from ..locale import load_symbol
 from ..scales import format_scale
 from ..wording import friction_summary
 from .force_marks import (
@@ -195,8 +196,8 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         # Named at the arrow's free end: its head, or its tail when it points onto its joint; beside its shaft, or led
         # from it, it names the arrow as well.
         free, outward = (start, -unit) if points_onto(start, end, point + shift) else (end, unit)
-        anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, direction_rad(outward), force.stroke.colour,
-                              along=(arrow.start, arrow.end)))
+        anchors.append(Anchor(_xy(free), load_symbol(force.name, text), NAME_SIZE, direction_rad(outward),
+                              force.stroke.colour, along=(arrow.start, arrow.end)))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
     circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
     arms, arm_anchors, equations = _arms(sheet, group, drawn, paper)
@@ -548,14 +549,15 @@ def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
         rings[about] = ring + 1
         where = sheet.positions[journals[load.name]] if load.name in journals else _link_centre(sheet, load.link)
         centre = _c(paper(where))
-        items_, anchor = _turn(centre, MOMENT_RADIUS_MM + 3.5 * ring, load.moment, load.name, _MOMENT,
+        items_, anchor = _turn(centre, MOMENT_RADIUS_MM + 3.5 * ring, load.moment, load_symbol(load.name, sheet.text),
+                               _MOMENT,
                                open_direction(_xy(centre), drawn))
         items += items_
         anchors.append(anchor)
     driver = sheet.mechanism.driver
     if is_driver and driver.kind == "crank" and sheet.forces.balancing != 0:
         centre = _c(paper(sheet.positions[driver.pivot]))
-        items_, anchor = _turn(centre, BALANCING_RADIUS_MM, sheet.forces.balancing, "Mb",
+        items_, anchor = _turn(centre, BALANCING_RADIUS_MM, sheet.forces.balancing, load_symbol("Mb", sheet.text),
                                Stroke(0.5, BALANCING.colour), open_direction(_xy(centre), drawn))
         items += items_
         anchors.append(anchor)
@@ -688,7 +690,7 @@ def _displacements(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[P
         centre = _c(paper(sheet.positions[load.point]))
         shifted = _c(paper(sheet.positions[load.point] + load.offset))
         items.append(Polyline((_xy(centre), _xy(shifted)), ARM))
-        anchors.append(Anchor(_xy((centre + shifted) / 2), f"hu{load.link}", NAME_SIZE - 0.4,
+        anchors.append(Anchor(_xy((centre + shifted) / 2), load_symbol(f"hu{load.link}", sheet.text), NAME_SIZE - 0.4,
                               direction_rad(1j * (shifted - centre)), ARM.colour))
     return items, anchors
 
@@ -718,7 +720,7 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                 start, end, unit = drawn[term.name]
                 count += 1
                 name = f"h{count}"
-                parts.append(f"{sign_mark(term.moment)} {term.name}·{name}")
+                parts.append(f"{sign_mark(term.moment)} {load_symbol(term.name, sheet.text)}·{name}")
                 if term.arm / sheet.length_scale < ZERO_MM:
                     undrawn.append(f"{name} = {significant(term.arm / sheet.length_scale)} {sheet.text['millimetre']}")
                     continue
@@ -729,7 +731,8 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
             else:
                 # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.
                 couple = any(load.name == term.name and not load.is_force for load in group.loads)
-                parts.append(f"{sign_mark(term.moment)} {term.name if couple else f'M({term.name})'}")
+                symbol = load_symbol(term.name, sheet.text)
+                parts.append(f"{sign_mark(term.moment)} {symbol if couple else f'M({symbol})'}")
         line = _equation(sheet, group, equation, parts)
         if line:
             lines.append(line)
@@ -772,7 +775,9 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
         sign = "−" if shift and equation.value < 0 else ""
         return f"{about} {sign}{unknown} {terms} = 0{shift}"
     if unknown == "Mb":
-        return f"{about} {' '.join(['Mb', *parts])} = 0,  Mb = {significant(equation.value)} {text['newton_metre']}"
+        balancing = load_symbol(unknown, text)
+        return (f"{about} {' '.join([balancing, *parts])} = 0,  {balancing} = {significant(equation.value)} "
+                f"{text['newton_metre']}")
     # The unknown's sense as first assumed: its moment balances the others'.
     sign = "" if equation.value == 0 or -total / equation.value >= 0 else "−"
     joint = next((found.joint for found in group.found
@@ -796,7 +801,8 @@ def _projection(sheet: ForceSheet, equation: ProjectionEquation) -> str:
     """``ΣFτ(5): R35τ + G5τ − Fu5τ = 0,  R35τ = 8.7 N``: a block's loads along its slot, each by its part along it;
     left out where the block has none."""
     largest = max((abs(value) for _, value in equation.components), default=0.0)
-    parts = [f"{sign_mark(value)} {name}τ" for name, value in equation.components if abs(value) > NEGLIGIBLE * largest]
+    parts = [f"{sign_mark(value)} {load_symbol(name, sheet.text)}τ" for name, value in equation.components
+             if abs(value) > NEGLIGIBLE * largest]
     if not parts:
         return ""
     return (f"ΣFτ({equation.link}): {equation.unknown} {' '.join(parts)} = 0,  {equation.unknown} = "

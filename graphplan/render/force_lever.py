@@ -21,6 +21,7 @@ from shapely.geometry.base import BaseGeometry
 from ..forces import TERM_ROUNDING
 from ..geometry import perpendicular_foot
 from ..lever import Lever, LeverTerm, shared_arms, turned
+from ..locale import load_symbol
 from ..memo import OwnedMemo
 from ..plans import Plan
 from ..scales import fit_scale, format_scale
@@ -208,6 +209,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     velocity = sheet.velocity
     drawn_at = sheet.lever_drawn_scale
 
+    def shown(name: str) -> str:
+        return load_symbol(name, text)
+
     def mm(letter: str) -> complex:
         return turned(velocity.points[letter]) / drawn_at
 
@@ -281,8 +285,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             leaders.append(Polyline((_xy(at), _xy(start)), Stroke(LEADER_WIDTH, stroke.colour)))
         # Named at its free end: its head, or its tail where it pushes onto its point.
         free, outward = (start, -unit) if points_onto(start, end, at + beside) else (end, unit)
-        anchors.append(Anchor(_xy(free), name, NAME_SIZE, direction_rad(outward), stroke.colour))
-        load_points[name] = image
+        anchors.append(Anchor(_xy(free), shown(name), NAME_SIZE, direction_rad(outward), stroke.colour))
+        load_points[shown(name)] = image
         # The arm runs to the force's line, through its point, beside which the arrow may stand.
         start, end = start - beside, end - beside
         foot = perpendicular_foot(0j, start, unit)
@@ -290,7 +294,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             continue
         arm = arm_of[name]
         if name != "Fb":
-            by_arm.setdefault(arm, []).append((sign_mark(moments[name]), name))
+            by_arm.setdefault(arm, []).append((sign_mark(moments[name]), shown(name)))
         if arm in arm_lengths:
             # Its arm is drawn and named with the first load on its line: only the line is run on to its foot.
             if run_on := arm_with_run_on(0j, start, end, unit)[1:]:
@@ -307,7 +311,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                   along=((0.0, 0.0), _xy(foot)), keep_off=((0.0, 0.0), POLE_CLEAR_MM)))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
     parts = [_factored(terms, arm) for arm, terms in by_arm.items()]
-    parts += [f"{sign_mark(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
+    parts += [f"{sign_mark(term.moment)} {shown(term.name)}·ω{term.link}/μV" for term in lever.terms
               if not term.image and stands(term)]
     arrows += leaders
     groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
@@ -344,8 +348,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         taken = {load_points[anchor.text] for anchor in unnamed}
         # Fb's head is left out: drawn and named in its own colour, it is not taken for a load's.  An arrow left unnamed
         # keeps its head on the drawing, by which another's name reads as its.
-        heads = [anchor.at for anchor in anchors[:len(load_points)] if anchor.text != "Fb"]
-        lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != "Fb"
+        heads = [anchor.at for anchor in anchors[:len(load_points)] if anchor.text != shown("Fb")]
+        lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != shown("Fb")
                  and load_points[anchor.text] not in taken
                  and (label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
                       or _by_another_head(anchor, placed, heads, labels.leaders))]
@@ -360,7 +364,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     apart = too_short_lines(short, text, CAPTION_WIDTH_MM, words="arms_too_short")
     unnamed_at = wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
                            for anchor in unnamed])
-    parts.append(f"{sign_mark(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
+    parts.append(f"{sign_mark(-sum(moments[name] for name in standing - {'Fb'}))} {shown('Fb')}·{shown('hb')}")
     equation = _leading(" ".join(parts))
     # Drawn turned as every lever is: a reader laying the velocity plan beside it must know which way.
     caption = [text["lever_title"], text["lever_turned"],
@@ -385,7 +389,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
 def _arm_names(sheet: ForceSheet, lever: Lever, loads: Sequence[tuple[str, str, complex]]) -> dict[str, str]:
     """The name of each standing load's arm on the lever (``loads``: name, image, force, in the order they are drawn,
     the balancing force Fb last): h1, h2, … in order, hb the balancing force's, one name for the loads whose lines
-    are one line within the drafting precision (:func:`~graphplan.lever.shared_arms`), hb where Fb is among them."""
+    are one line within the drafting precision (:func:`~graphplan.lever.shared_arms`), hb where Fb is among them;
+    hb as the locale writes it (hу in Russian), the others' h1, h2 alike in every locale."""
     shifts = {term.name: term.shift for term in lever.terms}
     tolerance = sheet.mechanism.scene.drawing.drafting_precision * sheet.lever_drawn_scale
     names: dict[str, str] = {}
@@ -393,7 +398,7 @@ def _arm_names(sheet: ForceSheet, lever: Lever, loads: Sequence[tuple[str, str, 
     for gathered in shared_arms(sheet.velocity, [(name, image, force, shifts.get(name, 0j))
                                                  for name, image, force in loads], tolerance):
         if "Fb" in gathered:
-            arm = "hb"
+            arm = load_symbol("hb", sheet.text)
         else:
             count += 1
             arm = f"h{count}"

@@ -299,7 +299,7 @@ def balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = True
     symbol alone."""
     text = sheet.text
     name, unit = balancing_symbol(sheet.mechanism, text)
-    what = text["balancing_moment" if name == "Mb" else "balancing_force"] if named else ""
+    what = text["balancing_moment" if sheet.mechanism.driver.kind == "crank" else "balancing_force"] if named else ""
     return text[how].format(what=what, name=name, value=significant(value), unit=unit).strip()
 
 

@@ -28,6 +28,7 @@ from shapely.strtree import STRtree
 
 from ..forces import ForcePlan, GroupForces, PolygonVector
 from ..geometry import Line
+from ..locale import load_symbol, load_symbols_in
 from ..memo import OwnedMemo
 from ..rounding import ROUNDING_NOISE
 from ..scales import finer_standard_scale, format_scale
@@ -150,23 +151,24 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
         drawing, left = _polygon(chain, [line for line in group.polygon.lines
                                          if any(v.name == line.label for v in chain)], scale,
                                  f"polygon-{key}" + (f"-{number + 1}" if len(chains) > 1 else ""),
-                                 _wholes(group, chain, scale))
+                                 _wholes(group, chain, scale), text)
         unnamed += [_unnamed_vector(vector, chain, scale, text) for vector in left]
         x0, _, x1, _ = bounds_of(item for layer in drawing for item in layer.items)
         layers.extend(moved_layers(drawing, cursor - x0, 0.0))
         cursor += x1 - x0 + POLYGON_GAP_MM
-    short = [f"{vector.name} = {significant(abs(vector.force))} {text['newton']}"
+    short = [f"{load_symbol(vector.name, text)} = {significant(abs(vector.force))} {text['newton']}"
              for vector in group.polygon.vectors if too_short_to_draw(vector.force, scale)]
     apart = too_short_lines(short, text, CAPTION_WIDTH_MM)
     # One a line: broken where it runs over the polygon's width, a sum broke before its "+ R14n".
     told = wrapped(unnamed, per_line=1)
     under = [text["polygon_unnamed"].format(sides=told[0]), *told[1:]] if told else []
-    caption = (text["force_polygon_title"], *group.polygon.equations, *_sums(group),
+    caption = (text["force_polygon_title"], *(load_symbols_in(equation, text) for equation in group.polygon.equations),
+               *_sums(group, text),
                text["force_scale"].format(value=format_scale(scale)), *apart, *under)
     return Drawing(f"polygon-{key}", layers, caption, run_on=short_run_on(short, apart, text, after=len(under)))
 
 
-def _sums(group: GroupForces) -> list[str]:
+def _sums(group: GroupForces, text: Mapping[str, str]) -> list[str]:
     """``ΣF2 = R32``, ``ΣF4 = G4 + Fu4 + R54``: what each ΣF of the polygon's equations that holds a reaction lays
     off, as the note gives every ΣF after the same equations.  A ΣF sums the reactions later groups hand back to its
     link with the link's own loads: the crank-rocker's "ΣF2 + R12 = 0" alone named no R32, which its polygon draws
@@ -180,13 +182,15 @@ def _sums(group: GroupForces) -> list[str]:
     language, as a Chinese caption's lines without Chinese words are."""
     sums = []
     for link in dict.fromkeys(int(found) for found in re.findall(r"ΣF(\d+)", group.polygon.equation)):
-        names = [load.name for load in group.loads if load.link == link and load.is_force and load.force != 0]
+        names = [load_symbol(load.name, text) for load in group.loads
+                 if load.link == link and load.is_force and load.force != 0]
         # A reaction, R32 of link 3 on link 2, is the one force of a ΣF that comes from another link through a pair.
         if any(name.startswith("R") for name in names):
             sums.append(f"ΣF{link} = {' + '.join(names)}")
     if not sums:
         return []
-    reach = min(max(text_width(equation, CAPTION_SIZE) for equation in group.polygon.equations), CAPTION_WIDTH_MM)
+    reach = min(max(text_width(load_symbols_in(equation, text), CAPTION_SIZE) for equation in group.polygon.equations),
+                CAPTION_WIDTH_MM)
     lines: list[str] = []
     for item in sums:
         if lines and text_width(f"{lines[-1]}; {item}", CAPTION_SIZE) <= reach:
@@ -258,9 +262,9 @@ def _wholes(group: GroupForces, chain: Sequence[PolygonVector], scale: float) ->
 
 
 def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float, name: str,
-             wholes: Sequence[PolygonVector]) -> tuple[list[Layer], list[PolygonVector]]:
-    """One closed polygon: its lines of action, its vectors as arrows, each named beside its middle but those left
-    unnamed, which are handed back for the caption to say."""
+             wholes: Sequence[PolygonVector], text: Mapping[str, str]) -> tuple[list[Layer], list[PolygonVector]]:
+    """One closed polygon: its lines of action, its vectors as arrows, each named beside its middle (as ``text``'s
+    locale writes the name) but those left unnamed, which are handed back for the caption to say."""
     def mm(value: complex) -> complex:
         return value / scale
 
@@ -304,7 +308,8 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
             across = -across
         # Beside any stretch of its side the name reads as naming it: where sides crowd at the middle (a sliver
         # of a polygon, R23n between R23 and R43), it slides along to a clear stretch rather than lie on one.
-        anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, direction_rad(across), arrow.stroke.colour,
+        anchors.append(Anchor(_xy(centre), load_symbol(vector.name, text), NAME_SIZE, direction_rad(across),
+                              arrow.stroke.colour,
                               along=(arrow.start, arrow.end)))
     # A name led across another vector's arrow reads as naming that one, as it does on the lever (or on a line, as
     # one lying there would): where the placer finds it no other spot (a sliver of sides side by side), the arrow is
@@ -378,11 +383,13 @@ def _unnamed_vector(vector: PolygonVector, chain: Sequence[PolygonVector], scale
     parts = sorted((side for side in chain if side.name in (f"{vector.name}τ", f"{vector.name}n")),
                    key=lambda side: abs(side.start - vector.start))
     if vector.role == "whole" and len(parts) == 2:
-        return f"{vector.name} = {parts[0].name} + {parts[1].name}"
+        return f"{vector.name} = {parts[0].name} + {parts[1].name}"  # a reaction's, named alike in every locale
     sides = [side for side in chain if side.role != "inner" and side is not vector
              and not too_short_to_draw(side.force, scale)]
     before = min(sides, key=lambda side: abs(side.end - vector.start), default=None)
-    return vector.name if before is None else text["polygon_side_from"].format(name=vector.name, before=before.name)
+    name = load_symbol(vector.name, text)
+    return name if before is None else text["polygon_side_from"].format(name=name,
+                                                                         before=load_symbol(before.name, text))
 
 
 def _crossed_apart(anchor: Anchor, text: Text, leaders: Sequence[Polyline], shafts: Sequence[LineString]

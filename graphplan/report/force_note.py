@@ -18,7 +18,7 @@ import numpy as np
 
 from .. import load_diagrams, settling
 from ..analysis import Analysis, PlanPosition
-from ..locale import Count
+from ..locale import Count, load_symbol, load_symbols_in
 from ..mechanism import Mechanism
 from ..plans import Plan
 from ..render.force_lever import enlarged_lever_scale
@@ -69,7 +69,7 @@ def forces_section(note: Writer, section: int) -> None:
         name, _ = force_report.balancing_symbol(note.analysis)
         load = balancing_load(note.mechanism, note.text)
         note.heading(3, note.t("note_cycle", load=load), f"{section}.{number}")
-        note.captioned(note.t("note_cycle_table", load=load, name=name, convention=_convention(note, name)),
+        note.captioned(note.t("note_cycle_table", load=load, name=name, convention=_convention(note)),
                        force_report.cycle_lines(note.analysis, note.mark))
         cycle = note.analysis.cycle
         if cycle is not None and not cycle.locked and cycle.without_friction != 0 and not cycle.loads_drive:
@@ -150,12 +150,12 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
             weight, inertia_force = note.n(row.weight), note.n(row.inertia_force)
             parts.append(f"G{row.link} = m{row.link}·g = {worked_product(note, [row.mass, row.gravity], weight)} = "
                          f"{weight} {text['newton']}")
-            parts.append(f"Fu{row.link} = m{row.link}·aS{row.link} = "
+            parts.append(f"{load_symbol(f'Fu{row.link}', text)} = m{row.link}·aS{row.link} = "
                          f"{worked_product(note, [row.mass, row.centre_acceleration], inertia_force)} = "
                          f"{inertia_force} {text['newton']}")
         if row.inertia > 0 and row.epsilon != 0:
             inertia_moment = note.n(row.inertia_moment)
-            moment = (f"Mu{row.link} = J{row.link}·ε{row.link} = "
+            moment = (f"{load_symbol(f'Mu{row.link}', text)} = J{row.link}·ε{row.link} = "
                       f"{worked_product(note, [row.inertia, abs(row.epsilon)], inertia_moment)} = "
                       f"{inertia_moment} {text['newton_metre']}")
             moment += note.with_sense(-row.epsilon)
@@ -311,9 +311,10 @@ def _force_group(note: Writer, plan: PlanPosition, group, friction: bool = False
             length = "—"
             words = note.t("note_role_load_short", least=least) if role == "load" else \
                 words + text["semicolon"] + note.t("note_role_short", least=least)
-        rows.append([vector.name, force_report.polar(force, note.mark), length, words])
+        rows.append([load_symbol(vector.name, text), force_report.polar(force, note.mark), length, words])
     sums = _polygon_sums(note, group)
-    note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale),
+    equations = text["separator"].join(load_symbols_in(equation, text) for equation in polygon.equations)
+    note.para(note.t("note_polygon", equation=equations, scale=note.n(scale),
                      unit=text["unit_force_scale"])
               + (" " + note.t("note_polygon_sums", sums=sums) if sums else "")
               + " " + note.t("note_polygon_table_lead", number=note.next_table))
@@ -362,7 +363,7 @@ def _assur_point(note: Writer, group, whole) -> str:
 
 def _projection(note: Writer, equation) -> str:
     """ΣFτ(5) = R35τ + G5τ + Fu5τ = R35τ − 11.77 + 3.1 = 0 ⇒ R35τ = 8.67 N."""
-    names = "".join(f" + {name}τ" for name, _ in equation.components)
+    names = "".join(f" + {load_symbol(name, note.text)}τ" for name, _ in equation.components)
     result = note.n(equation.value)
     values = _summed(note, [value for _, value in equation.components], result, lambda total: -total)
     return (f"ΣFτ({equation.link}) = {equation.unknown}{names} = {equation.unknown}{values} = 0 ⇒ "
@@ -425,7 +426,8 @@ def _polygon_sums(note: Writer, group) -> str:
     reactions handed back and the pairs' friction forces among them, as the polygon's table lists them."""
     sums = []
     for link in dict.fromkeys(int(found) for found in re.findall(r"ΣF(\d+)", group.polygon.equation)):
-        names = [load.name for load in group.loads if load.link == link and load.is_force and load.force != 0]
+        names = [load_symbol(load.name, note.text) for load in group.loads
+                 if load.link == link and load.is_force and load.force != 0]
         if names:
             sums.append(f"ΣF{link} = {' + '.join(names)}")
     return note.text["semicolon"].join(sums)
@@ -440,6 +442,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
     text = note.text
     total = sum(term.moment for term in equation.terms)
     couple = equation.unknown.startswith("M") or "·" in equation.unknown
+    unknown = load_symbol(equation.unknown, text)  # the driver's balancing moment Mb, as the locale writes it
     unit = text["newton_metre"] if couple else text["newton"]
     # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written.
     size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
@@ -451,7 +454,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
     if shift is not None and shift.through:
         # A slide's normal reaction with no couple to carry: it passes through the moment centre, its joint.
         terms = "".join(f" {'−' if moment < 0 else '+'} {note.n(abs(moment))}" for moment in moments)
-        line = (f"{head} = {equation.unknown}{terms} = 0 ⇒ "
+        line = (f"{head} = {unknown}{terms} = 0 ⇒ "
                 + note.t("note_couple_through", name=shift.reaction, point=equation.about))
     elif shift is not None:
         # A slide's normal reaction off its joint by x, a length, as on the force sheet: R·x signed by its moment,
@@ -461,15 +464,15 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
                                               lambda moment, force: moment / force)
         digits = _digits(couple_text)
         terms = _summed(note, moments, couple_text, lambda total: abs(total), digits)
-        line = (f"{head} = {_sign(equation.value)}{equation.unknown}{terms} = 0 ⇒ "
-                f"{equation.unknown} = {couple_text} {unit}{text['comma']}x = {couple_text}/{force} = "
+        line = (f"{head} = {_sign(equation.value)}{unknown}{terms} = 0 ⇒ "
+                f"{unknown} = {couple_text} {unit}{text['comma']}x = {couple_text}/{force} = "
                 f"{x} {text['unit_m']} = {note.n(1000.0 * shift.x)} {text['millimetre']}")
         moments_written = _written_terms(terms)
         return note.text["semicolon"].join([*_moment_parts(note, shown, loads, moments_written), line])
     elif couple:
         value = note.n(equation.value)
         terms = _summed(note, moments, value, lambda total: -total)
-        line = f"{head} = {equation.unknown}{terms} = 0 ⇒ {equation.unknown} = {value} {unit}"
+        line = f"{head} = {unknown}{terms} = 0 ⇒ {unknown} = {value} {unit}"
     else:
         value = note.n(equation.value)
         # sign·R·arm + Σ = 0: R = −Σ/(sign·arm), the arm written as the equation and the solution both write it.
@@ -481,10 +484,10 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
         written_sum = f"−{sum_text}" if total < 0 else sum_text
         # −Σ/arm, or Σ/arm where the unknown stands with a minus: a negative Σ after a minus in brackets.
         solved = f"{written_sum}/{arm}" if sign < 0 else f"−{note.enclosed(written_sum)}/{arm}"
-        line = (f"{head} = {'−' if sign < 0 else ''}{equation.unknown}·{arm}{terms} = 0"
-                f" ⇒ {equation.unknown} = {solved} = {value} {unit}")
+        line = (f"{head} = {'−' if sign < 0 else ''}{unknown}·{arm}{terms} = 0"
+                f" ⇒ {unknown} = {solved} = {value} {unit}")
         if equation.value < 0:
-            line += " " + note.t("note_sense_reversed", name=equation.unknown)
+            line += " " + note.t("note_sense_reversed", name=unknown)
     return note.text["semicolon"].join([*_moment_parts(note, shown, loads, _written_terms(terms)), line])
 
 
@@ -515,16 +518,17 @@ def _moment_parts(note: Writer, shown, loads: Mapping[str, object], written: lis
     parts = []
     for term, size in zip(shown, written, strict=True):
         moment = f"{_sign(term.moment)}{size}"
+        symbol = load_symbol(term.name, note.text)
         load = loads.get(term.name)
         force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
         if force is not None and term.arm:
             digits = _digits(size)
             (magnitude, arm), _ = reproducing(note, [abs(force), term.arm], [5, 4], size, digits,
                                               lambda force, arm: abs(force * arm))
-            parts.append(f"M({term.name}) = {_sign(term.moment)}{term.name}·h = "
+            parts.append(f"M({symbol}) = {_sign(term.moment)}{symbol}·h = "
                          f"{_sign(term.moment)}{note.product(magnitude, arm)} = {moment} {note.text['newton_metre']}")
         else:
-            parts.append(f"M({term.name}) = {moment} {note.text['newton_metre']}")
+            parts.append(f"M({symbol}) = {moment} {note.text['newton_metre']}")
     return parts
 
 
@@ -532,10 +536,10 @@ def _sign(value: float) -> str:
     return "−" if value < 0 else ""
 
 
-def _convention(note: Writer, name: str) -> str:
+def _convention(note: Writer) -> str:
     """The balancing load's sign convention, as forces.md states it: Mb counter-clockwise positive, Fb along the
     driving slider's guide."""
-    return note.text["forces_sense_moment" if name == "Mb" else "forces_sense_force"]
+    return force_report.sense_of_balancing(note.mechanism, note.text)
 
 
 def _balancing(note: Writer, plan: PlanPosition) -> None:
@@ -547,7 +551,7 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
     note.found.setdefault("balancing", []).append(found)
     # The sign convention with the value: the dynamics' reduced moments, signed by their power, stand beside Mb.
     note.para(note.t("note_balancing_polygons", name=name, value=note.n(polygons, 6), unit=unit,
-                     convention=_convention(note, name),
+                     convention=_convention(note),
                      sense=note.with_sense(polygons) if driver.kind == "crank" else ""))
     lever = plan.lever
     if lever is not None:
@@ -568,15 +572,15 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
             point = note.letter(velocity, term.image) if term.image else "—"
             if term.image and term.shift:  # a displaced Fu acts at the image of its own point, off its link's
                 link = term.name.removeprefix("Fu")
-                point += f" + ω{link}·hu{link}"
+                point += f" + ω{link}·{load_symbol(f'hu{link}', text)}"
             # The lever's sheet leaves out an arm shorter than a plan draws, as the plans leave out a vector.
             arm = note.on_plan(term.arm / drawn_at) if term.image else "—"
             force = note.n(abs(term.force)) if term.image else "—"
-            rows.append([term.name, point, force, arm, note.n(moment_mm)])
+            rows.append([load_symbol(term.name, text), point, force, arm, note.n(moment_mm)])
         note.para(note.t("note_lever_intro", sign=note.text["note_lever_sign"]))
         for term in lever.terms:
             if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
-                note.para(note.t("note_lever_block", name=term.name, link=term.link))
+                note.para(note.t("note_lever_block", name=load_symbol(term.name, text), link=term.link))
         if drawn_at != velocity.scale:
             scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", note.mark))
             note.para(note.t("note_lever_scale", scale=scale))
@@ -596,10 +600,11 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
         (moments, pole), _ = reproducing(note, [abs(total), pa], [5, 5], written_force,
                                          _digits(written_force), lambda moments, pole: moments / pole)
         # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
-        equation = f"Fb = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"
+        lever_force = load_symbol("Fb", text)
+        equation = f"{lever_force} = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"
         if driver.kind == "crank":
             length = f"l{driver.pivot}{driver.joint}"
-            equation += (f"{text['separator']}|{name}| = Fb·{length} = {note.product(written_force, arm)} = "
+            equation += (f"{text['separator']}|{name}| = {lever_force}·{length} = {note.product(written_force, arm)} = "
                          f"{moment} {unit}{note.with_sense(lever.balancing)}")
             note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True),
                              equation=equation))

@@ -29,7 +29,8 @@ from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..joint_friction import FrictionPair, pair_name
 from ..loads import external_names, motion_state, spring_length, spring_value
-from ..locale import Count, strings
+from ..locale import Count, load_symbol, strings
+from ..mechanism import Mechanism
 from ..render.numerals import number
 from ..rounding import ROUNDING_NOISE
 from ..statics import balancing_by_power, delivers_power, efficiency, rounded_zero, turned_round
@@ -206,6 +207,12 @@ def balancing_symbol(analysis: Analysis) -> tuple[str, str]:
     return wording.balancing_symbol(analysis.mechanism, strings(analysis.scene.locale))
 
 
+def sense_of_balancing(mechanism: Mechanism, text: Mapping[str, str]) -> str:
+    """The balancing load's sign convention: a moment counter-clockwise positive, a force along the driving slider's
+    guide (told by the driver, not by the symbol, which the locale spells)."""
+    return text["forces_sense_moment" if mechanism.driver.kind == "crank" else "forces_sense_force"]
+
+
 # Tables shared with the explanatory note: each returns Markdown lines in the scene's language.
 
 def initial_data_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
@@ -215,8 +222,9 @@ def initial_data_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") 
     if not rows:
         return []
     text = strings(analysis.scene.locale)
-    header = (f"| {text['column_link']} | m, {text['unit_kg']} | aS, {text['unit_m_per_s2']} | Fu, {text['newton']} | "
-              f"J, {text['unit_kg_m2']} | ε, {text['unit_rad_per_s2']} | Mu, {text['newton_metre']} | "
+    header = (f"| {text['column_link']} | m, {text['unit_kg']} | aS, {text['unit_m_per_s2']} | "
+              f"{load_symbol('Fu', text)}, {text['newton']} | J, {text['unit_kg_m2']} | ε, {text['unit_rad_per_s2']} | "
+              f"{load_symbol('Mu', text)}, {text['newton_metre']} | "
               f"G, {text['newton']} |")
     lines = [header, "|---|---:|---:|---:|---:|---:|---:|---:|"]
     for row in rows:
@@ -496,7 +504,7 @@ def markdown(analysis: Analysis) -> str:
     name, unit = balancing_symbol(analysis)
     lines = [f"# {text['forces_title'].format(title=literal(analysis.scene.title))}", "",
              text["forces_intro"].format(structure=analysis.mechanism.structure, name=name, unit=unit,
-                                         sense=text["forces_sense_moment" if name == "Mb" else "forces_sense_force"]),
+                                         sense=sense_of_balancing(analysis.mechanism, text)),
              ""]
     for plan in analysis.plans:
         if plan.forces is not None:
@@ -532,13 +540,13 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
         for equation in group.moments:
             # The moments the unknown balances, as the note writes them: a term of the plan's rounding (a block's
             # couple R34·x about C where its line passes through A) balances nothing and is left out.
-            terms = ", ".join(f"{term.name}: {number(term.moment, mark=mark)} {newton_metre}"
+            terms = ", ".join(f"{load_symbol(term.name, text)}: {number(term.moment, mark=mark)} {newton_metre}"
                               + (f" (h = {number(term.arm, 4, mark)} {metre})" if term.arm else "")
                               for term in equation.standing_terms)
             unit = newton_metre if equation.couple else text["newton"]
             found = shift(group, equation)
             if found is None:
-                solved = f"{equation.unknown} = {number(equation.value, mark=mark)} {unit}"
+                solved = f"{load_symbol(equation.unknown, text)} = {number(equation.value, mark=mark)} {unit}"
             elif found.through:
                 solved = text["note_couple_through"].format(name=found.reaction, point=equation.about)
             else:

@@ -44,7 +44,8 @@ SYMBOL = re.compile(
     r"|(?P<base2>[ωεψ])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
-    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[пдст])"
+    # A Russian textbook's inertia loads and balancing load (Fи3, Mи3, Mу, Mу0, Fу), the locale's spelling of Fu3, Mb.
+    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[иу]\d*|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
     r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
     # ΣMp: Zhukovsky's lever's moments about its pole p.
