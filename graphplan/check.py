@@ -23,6 +23,7 @@ from dataclasses import dataclass, replace
 
 from .errors import SceneError
 from .forces import ForcePlan
+from .locale import load_symbol
 from .lookalikes import lookalike_hint, twin
 from .mechanism import Mechanism
 from .plans import LaidVector, Plan, Step
@@ -532,8 +533,11 @@ _GREEK = {"omega": "ω", "epsilon": "ε"}
 _GREEK_NAMES = {letter: word for word, letter in _GREEK.items()}
 
 
-def quantity_symbol(quantity: str) -> str:
-    """A quantity as the textbook writes it, for a person to read: ``omega3`` → ``ω3``, ``VB`` unchanged."""
+def quantity_symbol(quantity: str, text: Mapping[str, str] | None = None) -> str:
+    """A quantity as the textbook writes it, for a person to read: ``omega3`` → ``ω3``, ``VB`` unchanged; given the
+    locale's ``text``, the balancing load as it writes it (``Mb`` → ``Mу``), the console's English without it."""
+    if text is not None and is_balancing(quantity):
+        return load_symbol(quantity, text)
     for word, letter in _GREEK.items():
         if quantity.startswith(word) and quantity[len(word):].isdigit():
             return letter + quantity[len(word):]

@@ -14,6 +14,7 @@ import csv
 import io
 import math
 from collections import defaultdict
+from collections.abc import Mapping
 
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, epsilon_of_another, is_balancing, is_reaction, quantity_symbol
@@ -77,9 +78,9 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
         cells = [number(exact, mark=mark)]
         cells += [number(rows[s].plan, mark=mark) if s in rows else "" for s in sources]
         cells += [_percent(rows[s].percent, mark) if s in rows else "" for s in sources]
-        lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
+        lines.append("| " + " | ".join([quantity_symbol(quantity, text), unit_of(quantity, text), *cells]) + " |")
     # A teacher looks for the worst reading first: under each δ column its largest, signed, and whose it is.
-    worst = [_worst(table, source, mark) for source in sources]
+    worst = [_worst(table, source, mark, text) for source in sources]
     lines.append("| " + " | ".join([text["errors_largest"], "%", "", *([""] * len(sources)), *worst]) + " |")
     return lines
 
@@ -102,7 +103,7 @@ def largest_errors(analysis: Analysis, accelerations: bool, mark: str = ".") -> 
             for source in SOURCES if source in found for percent, written, quantity, number in [found[source]]]
 
 
-def _worst(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str:
+def _worst(table: dict[str, dict[str, ErrorRow]], source: str, mark: str, text: Mapping[str, str]) -> str:
     """The error of ``source`` largest in magnitude, signed as its row writes it, with its quantity's symbol
     (``−11.820 (ε3)``); none named where it rounds to 0.000 (the construction's), since any row would do."""
     errors = {quantity: rows[source].percent for quantity, rows in table.items()
@@ -111,7 +112,7 @@ def _worst(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str
         return ""
     quantity = max(errors, key=lambda name: abs(errors[name]))
     written = _percent(errors[quantity], mark)
-    return written if round(errors[quantity], 3) == 0 else f"{written} ({quantity_symbol(quantity)})"
+    return written if round(errors[quantity], 3) == 0 else f"{written} ({quantity_symbol(quantity, text)})"
 
 
 def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_note: bool = False) -> list[str]:
@@ -172,7 +173,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             if rescaled.key.endswith("_pole") else "") + _shared_caveat(analysis, plan, drawn, rescaled, text, mark))
     if found.misread:
         # A segment's name may be on both plans (pb): the quantities it gives say which.
-        readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity) for row, _ in rows)})"
+        readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity, text) for row, _ in rows)})"
                              for rows in found.misread.values())
         lines.append(text["errors_misread"].format(
             percent=f"{FAR_OFF_PERCENT:g}", readings=readings,
@@ -187,7 +188,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         units = {"velocity": text["unit_m_per_s"], "acceleration": text["unit_m_per_s2"], "forces": text["newton"]}
         lines.append(text["errors_readings_values"].format(readings="; ".join(
             text["errors_reading_value"].format(
-                reading=_written(reading, text, mark), symbol=quantity_symbol(quantity),
+                reading=_written(reading, text, mark), symbol=quantity_symbol(quantity, text),
                 value=f"{value:.4g}".replace(".", mark), unit=units[value_kind(quantity)],
                 millimetres=f"{constructed:.4g}".replace(".", mark))
             for reading, (quantity, value, constructed) in found.values.items())))
@@ -362,7 +363,8 @@ def reactions_intro(analysis: Analysis, in_note: bool = False) -> str:
     found = ""
     if balancing is not None:
         found = " " + text["note_balancing_measured" if in_note else "errors_balancing_measured"].format(
-            symbol=balancing, unit=unit_of(balancing, text), load=balancing_load(analysis.mechanism, text, lower=True),
+            symbol=quantity_symbol(balancing, text), unit=unit_of(balancing, text),
+            load=balancing_load(analysis.mechanism, text, lower=True),
             key="[measured] balancing")
     return text["errors_forces"] + (f" {without}" if analysis.friction else "") + found
 
@@ -458,9 +460,9 @@ def velocity_plans_lines(analysis: Analysis, mark: str = ".") -> list[str]:
         for quantity in quantities:
             cells = [number(table[quantity]["construction"].plan, mark=mark) if quantity in table else ""
                      for table in tables]
-            lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
+            lines.append("| " + " | ".join([quantity_symbol(quantity, text), unit_of(quantity, text), *cells]) + " |")
         for source in sources:
-            cells = [_largest(table, source, mark) for table in tables]
+            cells = [_largest(table, source, mark, text) for table in tables]
             if not any(cells):
                 continue
             name = text["velocity_plans_largest"].format(source=text[f"source_{source}"])
@@ -469,13 +471,13 @@ def velocity_plans_lines(analysis: Analysis, mark: str = ".") -> list[str]:
     return lines[:-1]
 
 
-def _largest(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str:
+def _largest(table: dict[str, dict[str, ErrorRow]], source: str, mark: str, text: Mapping[str, str]) -> str:
     """A position's largest error of ``source`` in magnitude, of those that have a value; a reading of a quantity
     that vanishes there has none (its δ is written —) and is named beside it, so that it hides no finite
     error (``0.268 (VE: —)``).  A position not measured by hand has no measured error: empty, not 0."""
     errors = {quantity: abs(rows[source].percent) for quantity, rows in table.items() if source in rows}
     finite = [value for value in errors.values() if math.isfinite(value)]
-    undefined = [quantity_symbol(quantity) for quantity, value in errors.items() if not math.isfinite(value)]
+    undefined = [quantity_symbol(quantity, text) for quantity, value in errors.items() if not math.isfinite(value)]
     if not finite:
         return _percent(math.inf, mark) if undefined else ""
     return _percent(max(finite), mark) + (f" ({', '.join(undefined)}: —)" if undefined else "")
