@@ -350,15 +350,16 @@ def test_friction_reaches_the_note_and_forces_md():
     for plan in analysis.plans:
         balancing = plan.with_friction.balancing
         exact = float(analysis.with_friction.balancing[plan.index])
-        assert f"Mb = {force_report.number(balancing, 6, ',')} Н·м" in note
-        assert f"Mb = {force_report.number(balancing, 6, ',')} Н·м" in forces_md
+        # The fixture is Russian: its balancing moment is the textbook's Mу (уравновешивающий).
+        assert f"Mу = {force_report.number(balancing, 6, ',')} Н·м" in note
+        assert f"Mу = {force_report.number(balancing, 6, ',')} Н·м" in forces_md
         assert agrees(force_report.number(balancing, 6), exact, 6)
-    assert "| Mb с трением, Н·м | η |" in forces_md
+    assert "| Mу с трением, Н·м | η |" in forces_md
     # η is the smaller ratio: Mb0/Mb where the crank drives the load, Mb/Mb0 where the load drives the crank back.
     omega = analysis.mechanism.driver.omega
     for plan in analysis.plans:
         ideal, rubbing = plan.forces.balancing, plan.with_friction.balancing
-        ratio, eta = ("Mb0/Mb", ideal / rubbing) if ideal * omega > 0 else ("Mb/Mb0", rubbing / ideal)
+        ratio, eta = ("Mу0/Mу", ideal / rubbing) if ideal * omega > 0 else ("Mу/Mу0", rubbing / ideal)
         assert f"КПД η = {ratio} = {force_report.number(eta, 4, ',')}" in note
 
 
@@ -833,8 +834,8 @@ def test_a_working_stroke_slower_than_the_idle_one_gets_no_remark_on_k():
     assert re.search(r"K = φw/φi = 1\.\d+\.", note) and "K < 1" not in note
 
 
-@pytest.mark.parametrize(("name", "load", "other"), [("ratchet_crank_rocker", "Уравновешивающий момент Mb", "сила Fb"),
-                                                     ("slider_driven", "Уравновешивающая сила Fb", "момент Mb")])
+@pytest.mark.parametrize(("name", "load", "other"), [("ratchet_crank_rocker", "Уравновешивающий момент Mу", "сила Fу"),
+                                                     ("slider_driven", "Уравновешивающая сила Fу", "момент Mу")])
 def test_a_russian_note_names_the_balancing_load_a_moment_or_a_force_as_the_driver_takes_it(name, load, other):
     """«Уравновешивающая нагрузка Mb» for a crank read as a generic word where the course says «момент»."""
     note = note_of(name, "ru")

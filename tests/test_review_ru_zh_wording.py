@@ -169,7 +169,8 @@ def test_a_slider_driver_s_lever_names_its_balancing_force_once(tmp_path, locale
     assert lines
     for line in lines:
         assert line.lower().count(words) == 1, line
-        assert re.search(r"Fb = \|Σ\(F·h\)\|/pa = ", line), line
+        # The Russian textbook's Fу (уравновешивающая), as the Russian lever drawing names it.
+        assert re.search(f"{'Fу' if locale == 'ru' else 'Fb'}" r" = \|Σ\(F·h\)\|/pa = ", line), line
     assert len(lines) == len(analyse(load(FIXTURES / "slider_driven.toml")).plans)
 
 
