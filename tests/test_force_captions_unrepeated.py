@@ -16,8 +16,8 @@ from graphplan.render import forces as force_layout
 from graphplan.render.primitives import Text, text_extent
 from graphplan.render.sheet import course_sheets
 
-# The balancing moment's name and value as a caption writes it: "Mb = 96.55 N·m", "Mb = −257.0 Н·м".
-MB = re.compile(r"Mb = [−-]?[\d.]+ (?:N·m|Н·м)")
+# The balancing moment's name and value as a caption writes it: "Mb = 96.55 N·m", "Mу = −257.0 Н·м".
+MB = re.compile(r"M[bу] = [−-]?[\d.]+ (?:N·m|Н·м)")  # the Russian textbook's Mу
 
 
 def captions(layers, name):

@@ -22,7 +22,7 @@ from sheet_texts import box, texts
 
 import graphplan
 from graphplan.analysis import analyse
-from graphplan.locale import strings
+from graphplan.locale import load_symbol, strings
 from graphplan.render.primitives import text_width
 from graphplan.run import run
 from graphplan.starters import starter
@@ -73,11 +73,12 @@ def arms_mm(analysis, number_: int, caption: list[str], locale: str) -> dict[str
     named = {name: arm for name, arm in re.findall(r"([^\s−+]+)·(h\d+)\b", unfactored(equation))}
     arms = {}
     for term in lever.terms:
-        if term.name not in named:
+        name = load_symbol(term.name, strings(locale))  # as the caption writes it: the Russian Fи4 of Fu4
+        if name not in named:
             continue
         place = -1j * (velocity.points[term.image] + term.shift)  # turned clockwise about the pole
         direction = term.force / abs(term.force)
-        arms[named[term.name]] = abs((place * direction.conjugate()).imag) / drawn_at
+        arms[named[name]] = abs((place * direction.conjugate()).imag) / drawn_at
     return arms
 
 
@@ -93,7 +94,7 @@ def test_a_short_arm_on_the_sheet_says_it_is_not_drawn_with_its_value(drawn):
     assert len(short) >= 2 and len(arms) > len(short), arms
     said = next((k for k, line in enumerate(caption) if words in line), None)
     assert said is not None, caption
-    balancing = next(k for k, line in enumerate(caption) if line.startswith("Mb ="))
+    balancing = next(k for k, line in enumerate(caption) if line.startswith(f"{load_symbol('Mb', text)} ="))
     assert said < balancing, caption
     # The arms given after the words, before the balancing loads: each short one, at its length.
     listed = dict(re.findall(r"(?<!\w)(h\d+) = ([\d.,]+) " + re.escape(text["millimetre"]),
@@ -169,7 +170,7 @@ def test_a_group_cut_free_says_which_of_its_arms_are_too_short_to_draw(drawn):
     group = re.search(r'<g id="forces-0-body-II-3-4-caption">(.*?)</g>', source, re.DOTALL).group(1)
     caption = " ".join(item[4] for item in texts(group))
     drawn_at = number(re.search(r"μl = ([\d.,]+)", caption).group(1), locale)
-    arm = re.search(r"Fu3·(h\d+)", caption).group(1)
+    arm = re.search(re.escape(load_symbol("Fu3", text)) + r"·(h\d+)", caption).group(1)
     motion, index = analysis.motion, analysis.plans[0].index
     point = {name: complex(*motion.point(name).r[index]) for name in ("S3", "B")}
     along = complex(*motion.point("S3").a[index])

@@ -179,7 +179,7 @@ def check_lever_scale(analysis, sheets):
         velocities = sorted(abs(position.velocity.points[letter]) for letter in images
                             if abs(position.velocity.points[letter]) / drawn_at >= plan_layout.ZERO_MM)
         assert drawn == pytest.approx(velocities, rel=1e-6)
-        assert f"Mb = {significant(position.lever.balancing)} Н·м" in caption
+        assert f"Mу = {significant(position.lever.balancing)} Н·м" in caption  # Russian: the textbook's Mу
         scales.append(drawn_at)
     return scales
 
