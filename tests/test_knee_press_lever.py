@@ -16,6 +16,7 @@ from sheet_texts import box
 from test_student_probe_2 import KNEE_PRESS
 
 import graphplan
+from graphplan.locale import load_symbol, strings
 
 SVG = "{http://www.w3.org/2000/svg}"
 NUMBERS = r"-?\d+(?:\.\d+)?(?:e-?\d+)?"
@@ -132,7 +133,7 @@ def test_every_load_name_on_the_press_lever_stands_nearest_its_own_arrow_led_or_
 
 # The convention stated beside Mb, and beside the plans' Mr, in each language (as the textbooks of each put it).
 MB_CONVENTION = {"en": "(Mb counter-clockwise positive)",
-                 "ru": "(Mb: положительное направление — против часовой стрелки)", "zh": "（Mb 以逆时针为正）"}
+                 "ru": "(Mу: положительное направление — против часовой стрелки)", "zh": "（Mb 以逆时针为正）"}
 MR_CONVENTION = {"en": "positive where they drive, negative where they resist",
                  "ru": "положителен там, где силы движущие, и отрицателен там, где они сопротивляются",
                  "zh": "载荷起驱动作用处为正，起阻力作用处为负"}
@@ -191,8 +192,9 @@ def test_the_press_note_gives_mb_and_mr_each_with_its_sign_convention(tmp_path, 
         # Counter-clockwise positive: the press resists, and the moment that drives the clockwise crank is negative.
         assert loads < 0 and mb < 0
         written = [line for line in lines if MB_CONVENTION[locale] in line]
+        symbol = load_symbol("Mb", strings(locale))  # the Russian note's Mу
         assert any(math.isclose(_number(found), mb, rel_tol=1e-5)
-                   for line in written for found in re.findall(r"Mb = " + mark, line)), number
+                   for line in written for found in re.findall(symbol + " = " + mark, line)), number
         # Signed by the loads' power: negative where they resist, whichever way the crank turns.
         row = next(line for line in lines[header:] if line.startswith(f"| {number} |"))
         mr = _number(row.split("|")[6].strip())

@@ -184,7 +184,7 @@ def test_the_dynamics_of_a_scene_with_friction_says_its_moments_leave_the_fricti
     its works over the cycle are the driver's work without friction, ∫Mb0 dφ, not with it, ∫Mb dφ."""
     import numpy as np
 
-    from graphplan.locale import strings
+    from graphplan.locale import load_symbol, strings
     from graphplan.motion import solve
     from graphplan.run import run as run_scene
     from graphplan.scene import load
@@ -202,7 +202,7 @@ def test_the_dynamics_of_a_scene_with_friction_says_its_moments_leave_the_fricti
     assert words in note and note.count(words) == 1
     # The driver's work with friction (the force analysis's) is not written as the dynamics' driving work without it,
     # ΔT = Ad − Ar: the English and Chinese notes gave both one symbol.
-    (with_friction,) = set(re.findall(r"(\S+) = ∫Mb·dφ", note))
+    (with_friction,) = set(re.findall(rf"(\S+) = ∫{load_symbol('Mb', strings(locale))}·dφ", note))  # Russian: ∫Mу·dφ
     (dynamics_works,) = set(re.findall(r"Δ[TE] = ([AW]\w+) − ([AW]\w+)", note))
     assert with_friction not in dynamics_works, (with_friction, dynamics_works)
     # The cutting force, 2000 N over 0.05 to 0.95 of the ram's stroke H, does 2000·0.9·H over the cycle.

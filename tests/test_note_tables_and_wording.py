@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from graphplan.cli import main
-from graphplan.locale import strings
+from graphplan.locale import load_symbol, strings
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 # The drawings leave out a vector shorter than this (render.plans.ZERO_MM), a length the sheets' captions state.
@@ -147,7 +147,7 @@ def test_a_polygon_vector_too_short_to_draw_is_told_so_with_its_value_not_as_a_n
     text = strings(locale)
     rows = list(polygon_rows(notes("slider_driven", locale), locale))
     short = [row for row in rows if 0 < abs(row[2]) / row[0] < SHORTEST_DRAWN_MM]
-    assert {name for _, name, _, _, _ in short} >= {"Fu3", "Fu4"}
+    assert {name for _, name, _, _, _ in short} >= {load_symbol("Fu3", text), load_symbol("Fu4", text)}
     least = text["note_role_short"].format(least=str(SHORTEST_DRAWN_MM).replace(".", text["decimal_mark"]))
     for scale, name, value, length, role in rows:
         if abs(value) / scale < SHORTEST_DRAWN_MM and value != 0:

@@ -18,7 +18,7 @@ import pytest
 
 import graphplan
 from graphplan.analysis import analyse
-from graphplan.locale import strings
+from graphplan.locale import load_symbol, strings
 from graphplan.report.note import note_markdown
 from graphplan.report.results import results
 
@@ -200,16 +200,18 @@ def test_points_by_similarity_are_in_proportion_and_where_the_plan_has_them(read
 
 def test_inertia_loads_weights_and_moments(read):
     scene, lines, document = read
+    # The inertia loads as the note's locale writes them: the Russian Fи3, Mи3 of Fu3, Mu3.
+    force, moment = (load_symbol(name, strings(scene.locale)) for name in ("Fu", "Mu"))
     checked = 0
     for position, plan, line in sections(lines):
         if plan != "forces" or not line.startswith("- ") or "G" not in line:
             continue
         for name, link, left, right, printed in re.findall(
-                rf"(G|Fu|Mu)(\d+) = \S+ = ({NUMBER})·({NUMBER}) = ({NUMBER}) ", line):
+                rf"(G|{force}|{moment})(\d+) = \S+ = ({NUMBER})·({NUMBER}) = ({NUMBER}) ", line):
             data = scene.links[int(link)]
             if name == "G":
                 assert value(left) == data.mass and value(right) == G
-            elif name == "Fu":
+            elif name == force:
                 assert value(left) == data.mass
                 centre = position_of(document, position)["points"][data.centre]["a"]
                 assert value(right) == pytest.approx(math.hypot(*centre), rel=1e-4), line
@@ -217,7 +219,7 @@ def test_inertia_loads_weights_and_moments(read):
                 assert value(left) == data.inertia
                 epsilon = position_of(document, position)["links"][link]["epsilon"]
                 assert value(right) == pytest.approx(abs(epsilon), rel=1e-4), line
-                clockwise = re.search(rf"Mu{link} = [^;]*?, (clockwise|по часовой стрелке)", line) is not None
+                clockwise = re.search(rf"{moment}{link} = [^;]*?, (clockwise|по часовой стрелке)", line) is not None
                 assert clockwise == (epsilon > 0), f"−J·ε turns against ε: {line}"
             assert close(value(left) * value(right), printed, left, right), line
             checked += 1
@@ -340,12 +342,14 @@ def test_zhukovsky_lever_sums_to_the_balancing_moment_of_the_polygons(read):
     checked = 0
     lever_scale = None  # the lever's own μV where it is drawn larger than the plan, said just before its table
     crank = scene.driver.length
+    # The balancing load and the lever's force as the note's locale writes them: the Russian Mу, Fу.
+    mb_name, fb_name = (load_symbol(name, strings(scene.locale)) for name in ("Mb", "Fb"))
     for position, plan, line in sections(lines):
         if match := re.search(rf"μV = ({NUMBER}) \(", line):
             if plan == "forces":
                 lever_scale = value(match.group(1))
             continue
-        if plan != "forces" or "Fb = |Σ(F·h)|/pa" not in line:
+        if plan != "forces" or f"{fb_name} = |Σ(F·h)|/pa" not in line:
             continue
         index = lines.index(line)
         rows = []
@@ -358,8 +362,8 @@ def test_zhukovsky_lever_sums_to_the_balancing_moment_of_the_polygons(read):
             assert close(value(force) * value(arm), moment.lstrip("−"), force, arm), name
         total = sum(value(row[4]) for row in rows)
         summed, pa, fb, fb_again, arm, mb = re.search(
-            rf"Fb = \|Σ\(F·h\)\|/pa = ({NUMBER})/({NUMBER}) = ({NUMBER}) \S+ "
-            rf"\|Mb\| = Fb·l\S+ = ({NUMBER})·({NUMBER}) = ({NUMBER}) ", line).groups()
+            rf"{fb_name} = \|Σ\(F·h\)\|/pa = ({NUMBER})/({NUMBER}) = ({NUMBER}) \S+ "
+            rf"\|{mb_name}\| = {fb_name}·l\S+ = ({NUMBER})·({NUMBER}) = ({NUMBER}) ", line).groups()
         assert close(abs(total), summed, *(row[4] for row in rows)), line
         driver = position_of(document, position)
         velocity_a = abs(complex(*driver["points"][scene.driver.joint]["v"]))

@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 
 from graphplan.cli import main
+from graphplan.locale import load_symbol, strings
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 G = 9.81
@@ -506,8 +507,9 @@ def test_forces_md_gives_a_slider_s_fb_its_sense_along_the_guide_and_a_crank_s_m
         return (folder / "forces.md").read_text(encoding="utf-8").split("\n")[2]
 
     slider, crank = intro("slider_driven"), intro("scotch_yoke")
-    assert "Fb" in slider and turning_word not in slider
-    assert "Mb" in crank and turning_word in crank
+    text = strings(locale)  # the symbols as the locale writes them: the Russian Fу, Mу
+    assert load_symbol("Fb", text) in slider and turning_word not in slider
+    assert load_symbol("Mb", text) in crank and turning_word in crank
     guide_word = {"en": "guide", "ru": "направляющ", "zh": "导路"}[locale]
     assert guide_word in slider and guide_word not in crank
 
