@@ -24,6 +24,7 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.kinematics import cross
+from graphplan.locale import load_symbol, strings
 from graphplan.render import force_bodies
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg, length_scale, with_length_scale
@@ -203,7 +204,8 @@ def test_the_crank_takes_its_rod_s_reaction_on_the_rod_s_tangent_and_its_moment_
         pytest.approx(cross(complex(*tangent.points[0]) - paper_joint, unit), abs=CLOSE_MM)
 
     caption = " ".join(item.text for item in layers[f"body-{key}-caption"])
-    equation = caption[caption.index(f"ΣM{driver.pivot}("):caption.index(f"Mb = {written(balancing)}")]
+    symbol = load_symbol("Mb", strings(analysis.scene.locale))  # the Russian ratchet's Mу
+    equation = caption[caption.index(f"ΣM{driver.pivot}("):caption.index(f"{symbol} = {written(balancing)}")]
     pair = f"{rod_on_crank.target}{driver.link}"
     assert f"Mf{pair}" in equation and re.search(rf"R{pair}·h\d", equation)
     arm = abs(cross(joint - pivot, unit)) / scale
@@ -231,7 +233,7 @@ def test_the_driving_link_s_caption_gives_the_load_without_friction_and_the_effi
     ideal, rubbing = position.forces.balancing, position.with_friction.balancing
     eta = ideal / rubbing if ideal * analysis.mechanism.driver.omega > 0 else rubbing / ideal
     assert 0.0 < eta < 1.0
-    line = caption[caption.index(f"Mb = {written(rubbing)}"):]
+    line = caption[caption.index(f"{load_symbol('Mb', strings(analysis.scene.locale))} = {written(rubbing)}"):]
     assert written(ideal) in line and written(eta) in line and str(position.with_friction.iterations) in line
     # Not in the heading: a sheet set part by part keeps it.
     assert not any("η" in item.text for item in layers["sheet-title"])

@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 from test_sheets import STANDARD, analyses_of, with_drawing
 
+from graphplan.locale import load_symbol, strings
 from graphplan.render import force_lever
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
@@ -107,7 +108,8 @@ def test_the_lever_is_drawn_larger_exactly_where_its_plan_crowds(name):
         assert scale == pytest.approx(expected_scale(position.velocity, position.lever), rel=1e-12), \
             (name, position.number)
         # Drawn at any scale, the lever finds the same balancing moment.
-        assert caption.count(f"Mb = {significant(position.lever.balancing)} ") == 2  # the lever's, the polygons'
+        symbol = load_symbol("Mb", strings(analysis.scene.locale))  # the Russian ratchet's Mу
+        assert caption.count(f"{symbol} = {significant(position.lever.balancing)} ") == 2  # the lever's, the polygons'
 
 
 def test_the_fixtures_have_levers_drawn_larger_and_levers_left_at_the_plans_size():

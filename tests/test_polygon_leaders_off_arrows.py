@@ -20,7 +20,9 @@ import shapely
 from shapely.geometry import LineString, Point, Polygon
 from shapely.ops import substring
 
+import graphplan
 from graphplan import cli
+from graphplan.locale import load_symbol, strings
 from graphplan.render.primitives import svg_id, text_width
 from graphplan.render.svg import FONT_SIZE_PER_CAP
 
@@ -67,8 +69,10 @@ def text_boxes(element) -> list[tuple[str, object]]:
     return boxes
 
 
-def crossings(root, prefix: str) -> list[tuple[str, str]]:
-    """(a label, the arrow's id) for each leader of the drawing ``prefix`` that crosses another vector's arrow."""
+def crossings(root, prefix: str, text=None) -> list[tuple[str, str]]:
+    """(a label, the arrow's id) for each leader of the drawing ``prefix`` that crosses another vector's arrow; a label
+    as the locale ``text`` writes a load's name (the Russian Fи3), its arrow's id by the name inside (Fu3)."""
+    text = text or strings("en")
     arrows = {element.get("id"): shapely.union_all(shapes(element))
               for element in group(root, f"{prefix}-vectors") if element.tag == f"{SVG}g"}
     labels = text_boxes(group(root, f"{prefix}-labels"))
@@ -83,7 +87,8 @@ def crossings(root, prefix: str) -> list[tuple[str, str]]:
         inner = LineString((substring(leader, END_MM, leader.length).coords[0],
                             (x1 + (x1 - x0) / leader.length * GAP_MM, y1 + (y1 - y0) / leader.length * GAP_MM)))
         found += [(name, key) for key, arrow in arrows.items()
-                  if key != f"{prefix}-{svg_id(name)}" and inner.intersects(arrow)]
+                  if load_symbol(key.removeprefix(f"{prefix}-"), text) != name and key != f"{prefix}-{svg_id(name)}"
+                  and inner.intersects(arrow)]
     return found
 
 
@@ -109,11 +114,13 @@ def test_the_name_s_leader_crosses_no_other_vector_s_arrow(tmp_path, fixture, nu
     assert cli.main(["run", str(ROOT / "fixtures" / f"{fixture}.toml"), "--out", str(out),
                      "--only", "forces", "--sheet", "none"]) == 0
     root = ElementTree.parse(out / f"forces_{number}.svg").getroot()
+    text = strings(graphplan.load(ROOT / "fixtures" / f"{fixture}.toml").locale)
+    arrow = shapely.union_all(shapes(group(root, f"{prefix}-{svg_id(name)}")))
+    name = load_symbol(name, text)  # drawn as the locale writes it: the Russian ratchet's Fи3
     # Still by its own arrow: beside it, or on a leader that starts by it.
-    (box,) = [box for text, box in text_boxes(group(root, f"{prefix}-labels")) if text == name]
+    (box,) = [box for words, box in text_boxes(group(root, f"{prefix}-labels")) if words == name]
     led = [leader for leader in shapes(group(root, f"{prefix}-leaders"))
            if box.distance(Point(leader.coords[-1])) <= GAP_MM + 0.05]
-    arrow = shapely.union_all(shapes(group(root, f"{prefix}-{svg_id(name)}")))
     assert (all(Point(leader.coords[0]).distance(arrow) <= 0.9 + 1e-3 for leader in led) if led
             else box.distance(arrow) <= 2.5)
-    assert [found for found in crossings(root, prefix) if found[0] == name] == []
+    assert [found for found in crossings(root, prefix, text) if found[0] == name] == []
