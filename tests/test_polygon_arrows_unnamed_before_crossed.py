@@ -31,7 +31,7 @@ from test_lever_leaders_off_arrows import crossings
 
 import graphplan
 from graphplan.analysis import analyse
-from graphplan.locale import strings
+from graphplan.locale import load_symbol, strings
 from graphplan.render import force_polygons
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
@@ -87,14 +87,27 @@ def every_polygon(scene: str) -> Iterator[tuple[int, object]]:
             yield from ((position.number, drawing) for drawing in drawings)
 
 
-def led_to(leader: Polyline, arrows: Sequence[Arrow], names: Sequence[Text], prefix: str) -> tuple[Text, Arrow]:
+def inside_name(shown: str, text) -> str:
+    """The name inside (an arrow's id keeps it) of a load drawn as the locale ``text`` writes it: the Russian Fи3 is
+    Fu3, Mу is Mb; any other name as it is."""
+    for prefix in ("Fu", "Mu", "hu", "Mb", "Fb", "hb"):
+        symbol = load_symbol(prefix, text)
+        if shown.startswith(symbol) and load_symbol(prefix + shown[len(symbol):], text) == shown:
+            return prefix + shown[len(symbol):]
+    return shown
+
+
+def led_to(leader: Polyline, arrows: Sequence[Arrow], names: Sequence[Text], prefix: str,
+           text=None) -> tuple[Text, Arrow]:
     """The name ``leader`` leads to and the arrow it names: of the names whose arrow it starts by, the one whose box
-    it stops short of (in a sliver a leader starts by several arrows)."""
+    it stops short of (in a sliver a leader starts by several arrows); the names as the locale ``text`` (English, not
+    given) writes them."""
+    text = text or strings("en")
     by_key = {arrow.key: arrow for arrow in arrows}
     start, end = ShapelyPoint(leader.points[0]), ShapelyPoint(leader.points[-1])
-    near = [(name, by_key[svg_id(prefix, name.text)]) for name in names if svg_id(prefix, name.text) in by_key
-            and LineString((by_key[svg_id(prefix, name.text)].start,
-                            by_key[svg_id(prefix, name.text)].end)).distance(start) <= LED_FROM_MM]
+    keys = {name.text: svg_id(prefix, inside_name(name.text, text)) for name in names}
+    near = [(name, by_key[keys[name.text]]) for name in names if keys[name.text] in by_key
+            and LineString((by_key[keys[name.text]].start, by_key[keys[name.text]].end)).distance(start) <= LED_FROM_MM]
     assert near, f"a leader from {leader.points[0]} starts by no named arrow"
     return min(near, key=lambda pair: text_box(pair[0]).distance(end))
 
@@ -116,7 +129,9 @@ def checked(drawing, text, misread: list[str] | None = None) -> set[str]:
     its own arrow (or, given a ``misread`` list, is put in it where it does not), and each arrow is named once, on it or
     in its caption, found where the caption says.  The names the caption tells, handed back."""
     said = said_unnamed(drawing.caption, text)
-    told = dict(told_apart(item, text) for item in said)
+    # By the names inside, as the arrows' ids are: the caption writes them as the drawing does (the Russian Fи3).
+    told = {inside_name(name, text): (how[0], *(inside_name(other, text) for other in how[1:]))
+            for name, how in (told_apart(item, text) for item in said)}
     layers = {layer.name: layer.items for layer in drawing.layers}
     for vectors_layer in [name for name in layers if name.endswith("-vectors")]:
         prefix = vectors_layer.removesuffix("-vectors")
@@ -126,7 +141,7 @@ def checked(drawing, text, misread: list[str] | None = None) -> set[str]:
         by_key = {arrow.key: arrow for arrow in arrows}
         leader_of = {}
         for leader in leaders:
-            name, own = led_to(leader, arrows, names, prefix)
+            name, own = led_to(leader, arrows, names, prefix, text)
             leader_of[name.text] = leader
             longest = force_polygons.WHOLE_LEADER_MM if whole(name.text) else force_polygons.SLIVER_LEADER_MM
             for crossed in {key for _, key in crossings([leader], arrows)} - {own.key}:
@@ -135,7 +150,7 @@ def checked(drawing, text, misread: list[str] | None = None) -> set[str]:
                     f"{name.text}'s leader crosses {crossed} at {lines_apart_deg(own, by_key[crossed]):.1f}°")
         # The whole reactions the student reads off the polygon are named on it.
         wholes = [arrow.key for arrow in arrows if whole(arrow.key.removeprefix(f"{prefix}-"))]
-        assert {svg_id(prefix, name.text) for name in names} >= set(wholes)
+        assert {svg_id(prefix, inside_name(name.text, text)) for name in names} >= set(wholes)
         # And each reads as naming its own arrow, not one beside it.
         for name in names:
             if whole(name.text):
@@ -150,7 +165,8 @@ def checked(drawing, text, misread: list[str] | None = None) -> set[str]:
 
         # Each arrow named once: on the drawing, or in the caption, where it is found as the caption says.
         here = {name: how for name, how in told.items() if svg_id(prefix, name) in by_key}
-        assert sorted(svg_id(prefix, name) for name in [*(item.text for item in names), *here]) == sorted(by_key)
+        assert sorted(svg_id(prefix, name) for name in [*(inside_name(item.text, text) for item in names), *here]) == \
+            sorted(by_key)
         for name, how in here.items():
             if how[0] == "sum":
                 # Drawn whole from its first component's tail to the second one's head.
