@@ -71,7 +71,6 @@ from .primitives import (
     dot_marker,
     moved_layers,
     svg_id,
-    text_extent,
     text_width,
 )
 from .primitives import to_complex as _c
@@ -482,28 +481,35 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
     shares = (0.5, 0.625, 0.375, 0.75, 0.25, 0.875, 0.125) + ((0.9375, 0.0625) if clear else ())
     sides = [1j, -1j] if not clear else [side * np.exp(1j * math.radians(turn)) for side in (1j, -1j)
                                          for turn in CLEAR_TURNS_DEG]
-    for reach in np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, longest + 2 * anchor.size, 0.2):
-        # The leader's length first, from the box's corners alone: most spots fail it, before any shape is made; the
-        # boxes of one reach then asked of the tree at once.
-        spots = []
-        for share in shares:
-            point = start + (end - start) * share
-            for side in sides:
-                out = side * (end - start) / abs(end - start)
-                # As the placer sets a box out from its point (labels._candidates): its near edge ``reach`` off.
-                x, y = set_out(point.real, point.imag, out.real, out.imag, reach, width / 2, anchor.size)
-                text = Text((x, y), anchor.text, anchor.size, "middle", anchor.colour)
-                extent = text_extent(text)
-                near = complex(min(max(point.real, extent[0]), extent[2]), min(max(point.imag, extent[1]), extent[3]))
-                reach_to_box = abs(near - point)
-                if (LEADER_CLEARANCE + LEADER_GAP + SLIVER_LEADER_LEAST_MM <= reach_to_box
-                        <= longest + LEADER_CLEARANCE + LEADER_GAP + 1e-9):
-                    spots.append((point, text, extent, near, reach_to_box))
-        if not spots:
+    points, outs = [], []
+    for share in shares:
+        point = start + (end - start) * share
+        for side in sides:
+            points.append(point)
+            outs.append(side * (end - start) / abs(end - start))
+    point_x, point_y = np.array([point.real for point in points]), np.array([point.imag for point in points])
+    reaches = np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, longest + 2 * anchor.size, 0.2)[:, None]
+    # Every spot at every reach (a row a reach), set out as the placer sets a box out from its point
+    # (labels._candidates: its near edge ``reach`` off), its box as text_extent has it, and the nearest point of the
+    # box to its point, all at once: the leader's length decides most spots, before any shape is made.
+    x, y = set_out(point_x, point_y, np.array([out.real for out in outs]), np.array([out.imag for out in outs]),
+                   reaches, width / 2, anchor.size)
+    x0 = x + -width / 2
+    extents = np.stack((x0, y - 0.3 * anchor.size, x0 + width, y + 1.15 * anchor.size), axis=-1)
+    near_x = np.minimum(np.maximum(point_x, extents[..., 0]), extents[..., 2])
+    near_y = np.minimum(np.maximum(point_y, extents[..., 1]), extents[..., 3])
+    reaches_to_box = np.hypot(near_x - point_x, near_y - point_y)
+    long_enough = ((LEADER_CLEARANCE + LEADER_GAP + SLIVER_LEADER_LEAST_MM <= reaches_to_box)
+                   & (reaches_to_box <= longest + LEADER_CLEARANCE + LEADER_GAP + 1e-9))
+    for row in range(len(reaches)):
+        # The boxes of one reach asked of the tree at once.
+        kept = np.flatnonzero(long_enough[row])
+        if not len(kept):
             continue
-        blocked = set(box_blockers.query(shapely.box(*np.array([spot[2] for spot in spots]).T),
-                                         predicate="intersects")[0].tolist())
-        for index, (point, text, extent, near, reach_to_box) in enumerate(spots):
+        blocked = set(box_blockers.query(shapely.box(*extents[row, kept].T), predicate="intersects")[0].tolist())
+        spots = [(points[k], (float(x[row, k]), float(y[row, k])), complex(near_x[row, k], near_y[row, k]),
+                  float(reaches_to_box[row, k])) for k in kept.tolist()]
+        for index, (point, at, near, reach_to_box) in enumerate(spots):
             if index in blocked:
                 continue
             toward = (near - point) / reach_to_box
@@ -519,7 +525,8 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
                                                shapes[shapely.distance(ShapelyPoint(_xy(point)), shapes) > ZERO_MM])
                               < SIDE_BY_SIDE_MM).any()):
                 continue
-            yield text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
+            yield (Text(at, anchor.text, anchor.size, "middle", anchor.colour),
+                   Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour)))
 
 
 def _meets(tree: STRtree, geometry: BaseGeometry) -> bool:
