@@ -508,15 +508,20 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
             continue
         blocked = set(box_blockers.query(shapely.box(*extents[row, kept].T), predicate="intersects")[0].tolist())
         spots = [(points[k], (float(x[row, k]), float(y[row, k])), complex(near_x[row, k], near_y[row, k]),
-                  float(reaches_to_box[row, k])) for k in kept.tolist()]
-        for index, (point, at, near, reach_to_box) in enumerate(spots):
-            if index in blocked:
-                continue
-            toward = (near - point) / reach_to_box
-            leader = LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near - toward * LEADER_GAP)))
-            # Run on to the box: an arrow in the gap between the leader's end and the letters reads as crossed.
-            reaching = LineString((_xy(point), _xy(near)))
-            if leader.length >= longest or _meets(led, leader) or _meets(uncrossable, reaching):
+                  float(reaches_to_box[row, k])) for index, k in enumerate(kept.tolist()) if index not in blocked]
+        if not spots:
+            continue
+        # Each spot's leader, and the line from its point to its box, made and asked of the trees for the reach at once.
+        towards = [(near - point) / reach_to_box for point, _, near, reach_to_box in spots]
+        leaders = shapely.linestrings([(_xy(point + toward * LEADER_CLEARANCE), _xy(near - toward * LEADER_GAP))
+                                       for (point, _, near, _), toward in zip(spots, towards)])
+        # Run on to the box: an arrow in the gap between the leader's end and the letters reads as crossed.
+        reaching = shapely.linestrings([(_xy(point), _xy(near)) for point, _, near, _ in spots])
+        crossed = set(led.query(leaders, predicate="intersects")[0].tolist()) | set(
+            uncrossable.query(reaching, predicate="intersects")[0].tolist())
+        too_long = shapely.length(leaders) >= longest
+        for index, ((point, at, near, _), toward, leader) in enumerate(zip(spots, towards, leaders)):
+            if too_long[index] or index in crossed:
                 continue
             # Off the side's own shapes (its shaft, head and line) the leader, run on to the box, meets nothing, and
             # it runs along no other line: its middle stands as far off them as two sides set side by side.
