@@ -167,3 +167,7 @@ def test_a_line_is_not_broken_after_a_short_name_and_its_colon():
     clause = "without friction 6.48 N·m: the rest"
     assert fitted(clause, text_width("without friction 6.48 N·m:", 2.5) + 1.0, 2.5) == [
         "without friction 6.48 N·m:", "the rest"]
+    # Narrower than the name with what it names, broken between words, still not after the name: a lever's caption
+    # set beside it at 70 mm ended a line on "arrows:" with the μF alone on the next.
+    narrow = fitted(line, text_width("arrows: μF = 2 N/mm", 2.5) - 1.0, 2.5)
+    assert "arrows: μF = 2 N/mm" in narrow and not any(piece.endswith(":") for piece in narrow)
