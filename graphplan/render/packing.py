@@ -132,7 +132,15 @@ class Panel:
     # True for such a run as placed: it stands below every run of its drawing before it on the sheet, so that the
     # sheet reads as one grid, row after row.
     in_rows: bool = False
+    # The kind of drawing this one is read after (the load diagrams after the force sheets, whose values they give):
+    # it goes on no sheet before the last of that kind unless only a sheet before it has room for it, which saves
+    # the sheet it would open.  The slider-crank's load diagrams stood on A3 sheet 7, in room the second part of
+    # position 2's force sheet had left there, before the force sheet of position 8 on sheets 8 and 9.
+    reads_after: str = ""
     extent: Rect = field(init=False, repr=False, compare=False)
+    # The drawing with its heading left off, made once (:meth:`without_heading`): a part that goes on from another
+    # is asked for so at every sheet it is tried on, and measured anew each time.
+    _headless_way: Panel | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # Computed once: the packing asks for it at every spot it tries.
@@ -145,10 +153,13 @@ class Panel:
 
     def without_heading(self) -> Panel:
         """The drawing with its heading left off, as it stands on the sheet of the part it goes on from."""
-        lettered = self.lettered
-        return replace(self, layers=_headless_layers(self.layers),
-                       alternatives=tuple(way.without_heading() for way in self.alternatives),
-                       lettered=None if lettered is None else lambda: _headless_layers(lettered()))
+        if self._headless_way is None:
+            lettered = self.lettered
+            object.__setattr__(self, "_headless_way", replace(
+                self, layers=_headless_layers(self.layers),
+                alternatives=tuple(way.without_heading() for way in self.alternatives),
+                lettered=None if lettered is None else lambda: _headless_layers(lettered())))
+        return self._headless_way
 
     def drawn_layers(self) -> tuple[Layer, ...]:
         """The layers the sheet draws: lettered (:attr:`lettered`) where the labels wait for the way taken."""
@@ -243,10 +254,14 @@ class Page:
         # another drawing it read as that one's (position 2's lever under "position 7"), so the two never share.
         others = [drawing for drawing in self.drawings if _whole_of(drawing) != _whole_of(panel)]
         names = {placed.name for placed, _, _ in self.placed}
-        # A run headless only because it stands under the run it goes on from reads as that one's: no ambiguity.
-        if others and (_headless(panel) or any(_headless(drawing)
-                                               and not (drawing.in_rows and drawing.continues in names)
-                                               for drawing in others)):
+
+        def unowned(drawing: Panel) -> bool:
+            # A part headless only because it stands under the part it goes on from (a run of a grid, a force sheet's
+            # rows) reads as that one's: no ambiguity.  Kept apart, the offset slider-crank's load diagrams found no
+            # room on the sheet of a force sheet's rows, though the room was there.
+            return _headless(drawing) and drawing.continues not in names
+
+        if others and (unowned(panel) or any(map(unowned, others))):
             return []
         if panel.continues and panel.continues in names:
             # Under the heading of the part it goes on from, which it would only repeat as "continued".
@@ -453,9 +468,15 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
     for panel in panels:
         kind = _kind(panel)
         earliest = last_of_kind.get(kind, 0)
-        room = next((k for k in range(earliest, len(pages)) if not pages[k].label and pages[k].place(panel)), None)
-        if room is None:
-            room = _room_by_rearranging(pages, earliest, panel)
+        # Read after the drawings of another kind: on their last sheet or after, before it only where that saves one.
+        reads_from = max(earliest, last_of_kind.get(panel.reads_after, 0)) if panel.reads_after else earliest
+        room = None
+        for start, stop in ((reads_from, len(pages)), (earliest, reads_from)):
+            room = next((k for k in range(start, stop) if not pages[k].label and pages[k].place(panel)), None)
+            if room is None:
+                room = _room_by_rearranging(pages, start, panel, stop)
+            if room is not None:
+                break
         if room is not None:
             last_of_kind[kind] = room
             continue
@@ -580,10 +601,10 @@ _MOST_MOVES = 4
 _SPOTS_TRIED = 8
 
 
-def _room_by_rearranging(pages: list[Page], earliest: int, panel: Panel) -> int | None:
-    """The first page from ``earliest`` on that holds ``panel`` once its drawings are laid out afresh,
-    replaced in ``pages`` by its new layout; None when none does."""
-    for k in range(earliest, len(pages)):
+def _room_by_rearranging(pages: list[Page], earliest: int, panel: Panel, stop: int | None = None) -> int | None:
+    """The first page from ``earliest`` on (before ``stop``) that holds ``panel`` once its drawings are laid out
+    afresh, replaced in ``pages`` by its new layout; None when none does."""
+    for k in range(earliest, len(pages) if stop is None else stop):
         fresh = None if pages[k].label else _rearranged(pages[k], panel)
         if fresh is not None:
             pages[k] = fresh
@@ -761,6 +782,50 @@ def _under_heading(heading: Panel, page: Page, gap: float, sheet: str, form: str
     lowered.placed.append((heading, rect, (rect[0] - x0, rect[1] - y0)))
     lowered.area = fresh.area
     return lowered
+
+
+def area_allows(panels: Sequence[Panel], count: int, sheet: str, form: str) -> bool:
+    """Whether ``panels`` might stand on ``count`` sheets for all their area: False where even their least area
+    exceeds the room of that many, so that no way of packing them does (never True because they fit).
+
+    Each drawing is counted at its least area (its smallest way; a part
+    that goes on from another without its heading; a drawing too big for a
+    sheet in its smallest drawings) with half the gap kept round it, which
+    no other's takes, against an empty sheet's area grown by as much, less
+    its title block and corner box.  A packing costs a tenth of a second and
+    more: the cuts of the force sheets that cannot save a sheet are not
+    packed (:func:`graphplan.render.sheet.fewest_sheets_cuts`).
+    """
+    check_sheet(sheet)
+    room = max(_room_area(page_geometry(sheet, form, portrait)) for portrait in orientations(sheet))
+    return sum(map(_least_area, panels)) <= count * room + 1e-6
+
+
+def _room_area(geometry: PageGeometry) -> float:
+    """The area of an empty sheet a drawing grown by half the gap round it may take (:func:`area_allows`)."""
+    ax0, ay0, ax1, ay1 = _grown(geometry.area, GAP_MM / 2)
+    area = (ax1 - ax0) * (ay1 - ay0)
+    for box in (geometry.block, geometry.corner):
+        if box is not None:
+            # The boxes themselves: a drawing keeps PADDING_MM off them, more than the half gap it is grown by.
+            area -= max(0.0, min(ax1, box[2]) - max(ax0, box[0])) * max(0.0, min(ay1, box[3]) - max(ay0, box[1]))
+    return area
+
+
+def _least_area(panel: Panel) -> float:
+    """The least area ``panel`` takes on sheets, grown by half the gap round it (:func:`area_allows`)."""
+    if panel.runs is not None:
+        return 0.0  # taken run by run, each under a heading of its own: no less than nothing
+    ways = [*panel.ways, *(panel.without_heading().ways if panel.continues else ())]
+    if panel.parts:
+        ways.append(None)
+
+    def grown(way: Panel | None) -> float:
+        if way is None:
+            return sum(grown(part) for part in smallest_drawings(panel.parts))
+        return (width(way) + GAP_MM) * (height(way) + GAP_MM)
+
+    return min(map(grown, ways))
 
 
 def width(panel: Panel) -> float:
