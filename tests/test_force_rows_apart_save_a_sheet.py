@@ -10,10 +10,19 @@ what fits where is a fact of their sizes, the gaps kept between them and the tit
 
 from __future__ import annotations
 
+import itertools
+
+import pytest
+
+import graphplan
+from graphplan import deliverables
+from graphplan.analysis import analyse
+from graphplan.render.drawings import with_length_scale
 from graphplan.render.force_rows import HEADING_LAYER
 from graphplan.render.formats import PADDING_MM, page_geometry
 from graphplan.render.packing import GAP_MM, Panel, area_allows, pack
 from graphplan.render.primitives import MAIN, Layer, Polyline
+from graphplan.render.sheet import course_sheets, fewest_sheets_cuts
 
 SHEET, FORM = "A3", "iso"
 HEADING_MM = 20.0
@@ -73,6 +82,28 @@ def test_the_sizes_make_the_saving_a_fact():
     assert len(pack([*rows_apart(), loads()], SHEET, FORM)) == 1
 
 
+def test_a_sheet_that_stands_whole_stands_with_its_rows_apart_where_that_saves_a_sheet():
+    chosen = fewest_sheets_cuts([[[whole()]]], [loads()], SHEET, FORM, [rows_apart()])
+    assert [panel.name for panel in chosen] == ["forces-5", "forces-5-2"]
+    (page,) = pack([*chosen, loads()], SHEET, FORM)
+    placed = {panel.name: (panel, rect) for panel, rect, _ in page.placed}
+    # The lever goes on under the first row's heading, read after it: lower on the sheet.
+    lever, lever_rect = placed["forces-5-2"]
+    assert [layer.name for layer in lever.layers] == ["drawing"]
+    assert lever_rect[3] <= placed["forces-5"][1][1] - GAP_MM + 1e-9
+    for (_, a), (_, b) in itertools.combinations(placed.values(), 2):
+        assert a[2] + GAP_MM <= b[0] + 1e-9 or b[2] + GAP_MM <= a[0] + 1e-9 or \
+            a[3] + GAP_MM <= b[1] + 1e-9 or b[3] + GAP_MM <= a[1] + 1e-9
+
+
+def test_a_sheet_keeps_standing_whole_where_its_rows_apart_save_nothing():
+    """Load diagrams small enough to stand beside the whole: the sheet stays whole, one block under its heading."""
+    small = loads(50.0, 40.0)
+    assert len(pack([whole(), small], SHEET, FORM)) == 1
+    assert [panel.name for panel in fewest_sheets_cuts([[[whole()]]], [small], SHEET, FORM, [rows_apart()])] == \
+        ["forces-5"]
+
+
 def test_a_part_under_the_part_it_goes_on_from_shares_its_sheet():
     """Standing without its heading under its first part, the lever read as that part's: the load diagrams, which
     fit beside it, were kept off the sheet, and took one of their own."""
@@ -107,3 +138,19 @@ def test_the_area_bound_never_refuses_a_packing_that_exists():
     (ax0, ay0, ax1, ay1), _ = room()
     big = [Panel(f"plan-{k}", (box("plan", 0.6 * (ax1 - ax0), 0.6 * (ay1 - ay0)),)) for k in (1, 2, 3)]
     assert not area_allows(big, 1, SHEET, FORM)
+
+
+@pytest.mark.parametrize("fixture", ["shaper_six_bar"])
+def test_the_force_sheets_take_no_sheet_more_than_their_drawings_need(fixture):
+    """The shaper's six-bar on A1: its force sheets each took a sheet, and its load diagrams a third, a twentieth of
+    it drawn on.  Now no sheet of the forces is left nearly empty, and the load diagrams stand on the last of them,
+    after the force sheets whose values they give."""
+    analysis = with_length_scale(analyse(graphplan.load(f"fixtures/{fixture}.toml")))
+    panels = deliverables._course_panels(analysis)
+    sheets = [sheet for sheet in course_sheets(analysis, panels=panels)
+              if any(name.startswith(("forces-", "load-diagrams")) for name in sheet.panels)]
+    for sheet in sheets:
+        x0, y0, x1, y1 = sheet.frame
+        drawn = sum((r[2] - r[0]) * (r[3] - r[1]) for r in sheet.panels.values())
+        assert drawn >= 0.2 * (x1 - x0) * (y1 - y0), (sheet.number, sheet.panels)
+    assert "load-diagrams" in sheets[-1].panels

@@ -329,6 +329,17 @@ class Rows:
         each = apart._each_apart(fits) if found and len(found[0]) > 1 else []
         return [*found, each] if each and len(each) > len(found[0]) else found
 
+    def rows_apart(self, fits: Fits) -> list[Part]:
+        """For a sheet that stands whole: every row a part of its own under its heading (a group cut free beside
+        its polygon, the lever), in order, which the sheets take only where it saves one; none for a sheet of one
+        row, or where a row fits under no heading.
+
+        Whole, the shaper six-bar's force sheet of position 10 took an A1,
+        and its load diagrams another, a twentieth of it drawn on; apart, its
+        rows stand round its lever with the load diagrams beside them.
+        """
+        return self._each_apart(fits) if len(self) > 1 else []
+
     def _each_apart(self, fits: Fits) -> list[Part]:
         """Every row a part of its own under its heading (where it stands in parts, the rows are each a drawing:
         :meth:`_apart`); none where a row fits under no heading."""

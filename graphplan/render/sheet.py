@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import itertools
 import math
 from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
@@ -68,7 +69,7 @@ from .formats import (
     usual_orientations,
 )
 from .numerals import scale_factor
-from .packing import Page, Panel, bigger_holding, height, pack, rooms, smallest_drawings, width
+from .packing import Page, Panel, area_allows, bigger_holding, height, pack, rooms, smallest_drawings, width
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import (
     MAIN,
@@ -502,59 +503,104 @@ def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
     order, each whole under its heading: ``forces-5``, ``forces-5-2``, ...
     """
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
-    return fewest_sheets_cuts([cuts for _, cuts, _ in _force_sheets(analysis, chosen)], (), chosen,
-                              form_of(analysis.scene.locale))
+    forces = _force_sheets(analysis, chosen)
+    return fewest_sheets_cuts([cuts for _, cuts, _, _ in forces], (), chosen, form_of(analysis.scene.locale),
+                              [apart for _, _, apart, _ in forces])
 
 
 def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequence[Panel], sheet: str,
-                       form: str) -> list[Panel]:
+                       form: str, rows_apart: Sequence[Sequence[Panel]] = ()) -> list[Panel]:
     """The force sheets' parts, each sheet cut the way of its ``cuts`` (:meth:`force_rows.Rows.cuts`, least paper
-    first) that packs them, with the drawings ``after`` them, on the fewest ``sheet`` s: each in turn takes the
-    first of its cuts that saves a sheet on those chosen so far.
+    first) or its rows apart (``rows_apart``, each sheet's: :func:`_rows_apart`) that packs them, with the drawings
+    ``after`` them, on the fewest ``sheet`` s: each in turn takes the first of its ways that saves a sheet on those
+    chosen so far, and last the rows of several sheets apart at once where that saves one.
 
     The least paper of a sheet's parts alone does not tell: the engine's
     force sheet of position 2 in Russian took a part with group I and the
     lever 351 mm wide, which left no room beside it on its A2 for the sheet
     of position 8, and the force sheets took four A2 where the cut with the
     lever on a part of its own packs them on three.  One pack per cut tried,
-    a sheet after another, not one per combination of cuts.
+    a sheet after another, not one per combination of cuts, and none for a
+    cut whose drawings' area leaves no room for a sheet fewer
+    (:func:`~graphplan.render.packing.area_allows`).
     """
-    chosen = [list(ways[0]) for ways in cuts]
-    if sheet == "none" or all(len(ways) == 1 for ways in cuts):
-        return [part for parts in chosen for part in parts]
+    ways_of = [[*ways, *([apart] if apart else [])] for ways, apart in
+               itertools.zip_longest(cuts, rows_apart[:len(cuts)], fillvalue=())]
+    # Each sheet's rows apart, by its index among its ways: None where it has none.
+    apart_at = [len(ways) - 1 if len(ways) > len(own) else None for ways, own in zip(ways_of, cuts, strict=True)]
+    picked = [0] * len(cuts)  # the way each sheet takes, by its index among its ways
 
-    def sheets_taken(parts: Sequence[Sequence[Panel]]) -> float:
+    def parts_of(picks: Sequence[int]) -> list[Panel]:
+        return [part for ways, way in zip(ways_of, picks, strict=True) for part in ways[way]]
+
+    if sheet == "none" or all(len(ways) == 1 for ways in ways_of):
+        return parts_of(picked)
+
+    def sheets_taken(picks: Sequence[int], fewer_than: float = math.inf) -> float:
+        """The sheets the ways ``picks`` take, with the drawings after them; not packed, infinite, where their area
+        alone leaves no room for fewer than ``fewer_than`` (:func:`~graphplan.render.packing.area_allows`)."""
+        drawings = [*parts_of(picks), *after]
+        if fewer_than < math.inf and not area_allows(drawings, int(fewer_than) - 1, sheet, form):
+            return math.inf
         try:
-            return len(pack([*(part for panels in parts for part in panels), *after], sheet, form))
+            return len(pack(drawings, sheet, form))
         except SceneError:  # packed with the cut least paper first, the run says why no sheet holds a drawing
             return math.inf
 
-    fewest = sheets_taken(chosen)
-    # The cuts into more parts than a sheet's first (every drawing apart: a group away from its polygon) only once
-    # every sheet has tried its others, so that they are taken only where nothing else saves the sheet: tried in
-    # turn with the others, the Stephenson six-bar's sheet of position 3 stood in seven parts on an A1 where its
-    # second cut and position 9's take as few.
-    for apart in (False, True):
-        for k, ways in enumerate(cuts):
-            for way in ways[1:]:
-                if (len(way) > len(ways[0])) != apart:
-                    continue
-                tried = [*chosen[:k], list(way), *chosen[k + 1:]]
-                taken = sheets_taken(tried)
-                if taken < fewest:
-                    chosen, fewest = tried, taken
-    return [part for parts in chosen for part in parts]
+    fewest = sheets_taken(picked)
+
+    def saving(k: int, way: int) -> None:
+        nonlocal picked, fewest
+        tried = [*picked[:k], way, *picked[k + 1:]]
+        taken = sheets_taken(tried, fewest)
+        if taken < fewest:
+            picked, fewest = tried, taken
+
+    # The cuts into more parts than a sheet's first only once every sheet has tried its others, so that they are
+    # taken only where nothing else saves the sheet: tried in turn with the others, the Stephenson six-bar's sheet
+    # of position 3 stood in seven parts on an A1 where its second cut and position 9's take as few.  Its rows apart
+    # first, the last sheet's first: the rows of the sheet next to the load diagrams after them leave those their
+    # place after the force sheets, where an earlier sheet's took room before the later ones.  Every drawing apart
+    # (a group away from its polygon) last: the offset slider-crank's driving link stood in the middle of its A1, its
+    # polygon under another group's, where its rows apart save the sheet too.
+    for k, ways in enumerate(cuts):
+        for way in range(1, len(ways)):
+            if len(ways[way]) <= len(ways[0]):
+                saving(k, way)
+    for k in reversed(range(len(cuts))):
+        if apart_at[k] is not None:
+            saving(k, apart_at[k])
+    for k, ways in enumerate(cuts):
+        for way in range(1, len(ways)):
+            if len(ways[way]) > len(ways[0]):
+                saving(k, way)
+    # Where no sheet's rows apart save one alone, several may together: the Stephenson six-bar's force sheets on A1
+    # each left room on the other's sheets that only their rows apart could take, on three sheets with either apart
+    # and on two with both.  Every sheet's rows apart at once, then each sheet put back as it was where the set
+    # keeps its count without it, so that only the sheets the saving needs stand apart.
+    together = [way if at is None else at for way, at in zip(picked, apart_at, strict=True)]
+    changed = [k for k, way in enumerate(together) if way != picked[k]]
+    if len(changed) > 1:
+        taken = sheets_taken(together, fewest)
+        if taken < fewest:
+            for k in reversed(changed):
+                tried = [*together[:k], picked[k], *together[k + 1:]]
+                if sheets_taken(tried, taken + 1) <= taken:
+                    together = tried
+            picked = together
+    return parts_of(picked)
 
 
-# A force sheet whole, the ways it may stand on sheets, and the same sheet drawn larger by given standard steps of
-# μl and μF (made when first asked for, None where no empty sheet holds it so: :func:`_larger_where_room` asks).
-_ForceSheetWays = tuple[Panel, list[list[Panel]], Callable[[tuple[int, int]], Panel | None]]
+# A force sheet whole, the ways it may stand on sheets, its rows apart (:func:`_rows_apart`: none where that is no
+# other way), and the same sheet drawn larger by given standard steps of μl and μF (made when first asked for, None
+# where no empty sheet holds it so: :func:`_larger_where_room` asks).
+_ForceSheetWays = tuple[Panel, list[list[Panel]], list[Panel], Callable[[tuple[int, int]], Panel | None]]
 
 
 def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[_ForceSheetWays]:
     """Each force sheet of :func:`force_panels` whole (its rows down one column), the ways it may stand on
-    sheets (:func:`fewest_sheets_cuts` chooses), and the same sheet drawn larger where an empty sheet holds it so
-    whole (:func:`_larger_force_sheet`)."""
+    sheets and its rows apart (:func:`fewest_sheets_cuts` chooses), and the same sheet drawn larger where an empty
+    sheet holds it so whole (:func:`_larger_force_sheet`)."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     found = []
     for position in analysis.plans:
@@ -580,8 +626,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                   with_friction: bool = False) -> _ForceSheetWays:
     """The force sheet of ``position`` whole, and the ways it may stand on sheets: whole, or its parts in order
     where no empty ``sheet`` holds it whole in any way (each part whole under its heading, continued), cut as
-    :meth:`force_rows.Rows.cuts` has them; and, where it stands whole as first drawn, the same sheet drawn larger
-    (:func:`_larger_force_sheet`)."""
+    :meth:`force_rows.Rows.cuts` has them; its rows apart (:func:`_rows_apart`); and, where it stands whole as
+    first drawn, the same sheet drawn larger (:func:`_larger_force_sheet`)."""
     words = labels(analysis.scene.locale)
     form = form_of(analysis.scene.locale)
     drawn = force_sheet(analysis, position, with_friction)
@@ -602,42 +648,31 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def laid(rows: force_rows.Rows) -> force_rows.Rows:
         return rows.parted(parted) if parted else rows
 
-    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[force_rows.Part]], heading: force_rows.Heading
-            ) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Heading]:
-        """Each cut's parts as panels, each going on from the one before, their headings to name the scales of
-        the drawings the packing puts under them (``heading``'s), each with its long captions beside its drawings
-        as its other way (:class:`force_rows.Part`); the lever drawn larger where the sheet holds it so on its part
-        without adding a part."""
+    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[force_rows.Part]], rows: force_rows.Rows
+            ) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Rows]:
+        """Each cut's parts as panels (:func:`_part_panels`), the lever drawn larger where the sheet holds it so on
+        its part without adding a part; the rows they are cut from."""
         parts = cuts[0]
         for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
             larger_rows = force_layout.rows(larger, groups_cut_free)
             larger_cuts = laid(larger_rows).cuts(fits, headless=any(_headless(part) for part in parts))
             if larger_cuts and len(larger_cuts[0]) == len(parts):
-                drawn, cuts, heading = larger, larger_cuts, larger_rows.heading
+                drawn, cuts, rows = larger, larger_cuts, larger_rows
                 one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
                 break
-        names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, max(map(len, cuts))))]
-
-        def panel(k: int, part: force_rows.Part) -> Panel:
-            ways = [replace(split(way, names[k], one.label, _group_of_field), continues=names[k - 1] if k else "",
-                            heading_scales=heading.scales, heading_comma=heading.comma)
-                    for way in (part, part.aside) if way is not None]
-            return replace(ways[0], alternatives=tuple(ways[1:]))
-
-        return drawn, one, [[panel(k, part) for k, part in enumerate(parts)] for parts in cuts], heading
+        return drawn, one, [_part_panels(parts, one, rows.heading) for parts in cuts], rows
 
     before: dict[str, tuple[float, float]] = {}
     # The first way in parts with a drawing that stands under its heading only with its equations beside it, or
     # under none: taken only where no smaller lettering gives every part its heading over its equations under its
     # drawings (a part with none says whose it is by its title block alone).
-    headless: tuple[force_layout.ForceSheet, Panel, list[list[force_rows.Part]], force_rows.Heading] | None = None
+    headless: tuple[force_layout.ForceSheet, Panel, list[list[force_rows.Part]], force_rows.Rows] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn, groups_cut_free)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
-        heading = rows.heading
         if sheet == "none":
-            return replace(one, drawn_alone=True), [[one]], lambda steps: None
+            return replace(one, drawn_alone=True), [[one]], [], lambda steps: None
         # Its rows in two columns where a sheet is too low for them in one.
         cuts = [[replace(one, alternatives=(two,) if two.extent != one.extent else ())]]
         if any(fits(width(way), height(way)) for way in cuts[0][0].ways):
@@ -651,7 +686,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         placed = laid(rows)  # the groups parted so far set apart from their equations, laid out once for the step
         found = placed.cuts(fits, headless=False)
         if found:
-            drawn, one, cuts, heading = cut(drawn, one, found, rows.heading)
+            drawn, one, cuts, rows = cut(drawn, one, found, rows)
             headless = None
             break
         # Lettered smaller, a part that stands under its heading only with its equations beside it may share a
@@ -660,7 +695,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         # four at either, its group alone on a sheet at the usual lettering and beside its polygon at the smaller.
         found = placed.cuts(fits) if headless is None or drawn.caption_size < headless[0].caption_size else []
         if found and (headless is None or _no_more_parts_or_headings_missing(found[0], headless[2][0])):
-            headless = (drawn, one, found, rows.heading)
+            headless = (drawn, one, found, rows)
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
         unheld = placed.unheld(fits)
@@ -686,8 +721,10 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         else:
             break
     if headless is not None:
-        drawn, one, cuts, heading = cut(*headless)
-    whole, ways = _finished(analysis, drawn, one, cuts, heading)
+        drawn, one, cuts, rows = cut(*headless)
+    apart = _rows_apart(cuts, laid(rows), one, fits)
+    whole, ways = _finished(analysis, drawn, one, [*cuts, apart] if apart else cuts, rows.heading)
+    ways, apart = (ways[:-1], ways[-1]) if apart else (ways, [])
     # Only a sheet an empty sheet held whole as first drawn, at its lettering and scales, has room to spare.
     roomy = drawn == first and not parted and len(ways) == 1 and len(ways[0]) == 1
 
@@ -718,7 +755,35 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
 
     # The whole as the run writes it on its own only where nothing was changed to fit the sheet: its parts stand as
     # cut, but a lever stepped back, smaller lettering or a group at a larger μl would change the file with the format.
-    return replace(whole, drawn_alone=drawn == first), ways, larger
+    return replace(whole, drawn_alone=drawn == first), ways, apart, larger
+
+
+def _rows_apart(cuts: list[list[Panel]], rows: force_rows.Rows, whole: Panel,
+                fits: Callable[[float, float], bool]) -> list[Panel]:
+    """The force sheet ``whole``'s ``rows`` apart (:meth:`force_rows.Rows.rows_apart`) as panels, where that is
+    another way than its ``cuts``, in more parts than its first: a cut the sheets take only where it saves one
+    (:func:`fewest_sheets_cuts`), so that a sheet that stands whole may still give the room in its block to the
+    drawings after it, and one in parts keeps each group beside its polygon where its drawings apart would not."""
+    apart = rows.rows_apart(fits)
+    # A cut of as many parts is the rows apart already: every drawing apart, each row one drawing.
+    if len(apart) <= len(cuts[0]) or any(len(cut) == len(apart) for cut in cuts):
+        return []
+    return _part_panels(apart, whole, rows.heading)
+
+
+def _part_panels(parts: Sequence[force_rows.Part], whole: Panel, heading: force_rows.Heading) -> list[Panel]:
+    """The parts of one cut of the force sheet ``whole`` as panels, each going on from the one before, their
+    headings to name the scales of the drawings the packing puts under them (``heading``'s), each with its long
+    captions beside its drawings as its other way (:class:`force_rows.Part`)."""
+    names = [whole.name, *(f"{whole.name}-{k + 1}" for k in range(1, len(parts)))]
+
+    def panel(k: int, part: force_rows.Part) -> Panel:
+        ways = [replace(split(way, names[k], whole.label, _group_of_field), continues=names[k - 1] if k else "",
+                        heading_scales=heading.scales, heading_comma=heading.comma)
+                for way in (part, part.aside) if way is not None]
+        return replace(ways[0], alternatives=tuple(ways[1:]))
+
+    return [panel(k, part) for k, part in enumerate(parts)]
 
 
 def _finished(analysis: Analysis, drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[Panel]],
@@ -1171,12 +1236,21 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
     # Placed after the force sheets, the load diagrams take the first room left beside one (the first sheet of
     # forces that has it); placed first, one took an A1 alone where the force sheet after it needed a whole sheet.
     form = form_of(analysis.scene.locale)
-    parts = fewest_sheets_cuts([cuts for _, cuts, _ in forces], loads, chosen, form)
-    if loads and parts and smaller_loads is not None and chosen != "none":
-        loads = _loads_saving_a_sheet(parts, loads, smaller_loads, chosen, form)
+    cuts = [cuts for _, cuts, _, _ in forces]
+    if loads and smaller_loads is not None and chosen != "none":
+        # Drawn smaller where at their size they would take a sheet of their own beside the force sheets as cut, as
+        # they were before any force sheet's rows stood apart: a knee press's load diagram stands beside a whole
+        # force sheet at 120 by 45 mm, not at its usual size beside its rows apart.
+        parts = fewest_sheets_cuts(cuts, loads, chosen, form)
+        if parts:
+            loads = _loads_saving_a_sheet(parts, loads, smaller_loads, chosen, form)
+    parts = fewest_sheets_cuts(cuts, loads, chosen, form, [apart for _, _, apart, _ in forces])
     if larger and chosen != "none":
-        parts = _larger_where_room(parts, loads, [ways for _, _, ways in forces], chosen, form)
-    return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _, _ in forces), tuple(dynamics),
+        # Only a force sheet that stands whole is drawn larger: one cut into its rows apart saved a sheet.
+        cut_up = {part.continues for part in parts}
+        parts = _larger_where_room(parts, loads, [ways for whole, _, _, ways in forces if whole.name not in cut_up],
+                                   chosen, form)
+    return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _, _, _ in forces), tuple(dynamics),
                         tuple(balancing))
 
 
@@ -1289,8 +1363,9 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
             if sheet is None or sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
                 break
             drawn, usual = load_layout.parts(diagrams, text, smaller), False
-    # At the usual fields, the drawing load_diagrams.svg is (:func:`graphplan.render.load_diagrams.layout`).
-    return _apart("load-diagrams", text["ld_title"], drawn, drawn_alone=usual)
+    # At the usual fields, the drawing load_diagrams.svg is (:func:`graphplan.render.load_diagrams.layout`).  Read
+    # after the force sheets, whose values they give, where that costs no sheet.
+    return replace(_apart("load-diagrams", text["ld_title"], drawn, drawn_alone=usual), reads_after="forces")
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
