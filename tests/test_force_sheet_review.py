@@ -152,6 +152,25 @@ def test_a_chinese_force_sheets_heading_sets_its_scales_off_as_its_captions_do(t
         assert ", " not in line and line.count("，") == line.count("μ") - 1, line
 
 
+def test_a_caption_beside_its_drawing_is_set_no_narrower_than_its_names_and_what_they_name():
+    """The lever's caption beside it on the slider-crank's A2, broken to 70 mm, no taller than the lever there, ended
+    a line on "arrows:", its μF alone on the next: "arrows: μF = 40 N/mm" is wider than 70 mm at the lettering, and a
+    piece too wide for its width breaks between words.  It is set at the next width, which holds the two on a line,
+    and still no taller than the drawing."""
+    from graphplan.render.force_rows import CAPTION_BESIDE_WIDTHS_MM, Drawing, _caption_beside, _lines_height
+    from graphplan.render.primitives import text_width
+
+    size = 5.0
+    caption = ("Zhukovsky's lever", "the velocity plan turned 90° clockwise",
+               "μV = 0.04 (m/s)/mm, arrows: μF = 40 N/mm (no arrow shorter than 10 mm)", "ΣMp: G3·h1 − Fu3·h2 = 0")
+    assert text_width("arrows: μF = 40 N/mm", size) > CAPTION_BESIDE_WIDTHS_MM[0]  # the narrowest breaks it
+    height = 200.0
+    lines = _caption_beside(Drawing("lever", [], caption), height, size)
+    assert any(line.startswith("arrows: μF = 40 N/mm") or ", arrows: μF = 40 N/mm" in line for line, _ in lines)
+    assert not any(line.endswith(":") for line, _ in lines)
+    assert _lines_height(lines, size) <= height
+
+
 def test_a_line_is_not_broken_after_a_short_name_and_its_colon():
     """«μV = 0.004 (m/s)/mm, arrows:» ended a lever's caption line, its μF on the next; a colon after a clause of
     several words is still a place to break."""
@@ -167,7 +186,3 @@ def test_a_line_is_not_broken_after_a_short_name_and_its_colon():
     clause = "without friction 6.48 N·m: the rest"
     assert fitted(clause, text_width("without friction 6.48 N·m:", 2.5) + 1.0, 2.5) == [
         "without friction 6.48 N·m:", "the rest"]
-    # Narrower than the name with what it names, broken between words, still not after the name: a lever's caption
-    # set beside it at 70 mm ended a line on "arrows:" with the μF alone on the next.
-    narrow = fitted(line, text_width("arrows: μF = 2 N/mm", 2.5) - 1.0, 2.5)
-    assert "arrows: μF = 2 N/mm" in narrow and not any(piece.endswith(":") for piece in narrow)

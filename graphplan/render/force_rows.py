@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, TITLE_LAYER, Arrangement, title_texts
 from .primitives import Layer, Text, bounds, bounds_of, moved_layers, text_width
-from .wrapping import fitted
+from .wrapping import NAME_BEFORE, fitted
 
 # The least width a caption is broken to (mm), so that a narrow drawing's equations are not set a word a line.
 CAPTION_WIDTH_MM = 160.0
@@ -626,10 +626,12 @@ def _caption_beside(drawing: Drawing, height: float, size: float) -> list[tuple[
     """``drawing``'s caption broken to the narrowest width that keeps it no taller than ``height`` mm, the
     drawing's, and to the widest where none does."""
     # Broken width by width, the narrowest first, as far as the first that fits: breaking every caption of a sheet's
-    # rows six ways was an eighth of an A3 set's sheets.
+    # rows six ways was an eighth of an A3 set's sheets.  Not so narrow that a line ends on a name's colon, what it
+    # names on the next: at 70 mm the lever's "arrows: μF = 40 N/mm (no arrow shorter than 10 mm)" left "arrows:"
+    # alone, though the phrase is no place for a break where the width holds it (:data:`wrapping.NAME_BEFORE`).
     for width in CAPTION_BESIDE_WIDTHS_MM:
         lines = caption_lines(drawing.caption, width, size, drawing.run_on)
-        if _lines_height(lines, size) <= height:
+        if _lines_height(lines, size) <= height and not any(NAME_BEFORE.search(line) for line, _ in lines):
             break
     return lines
 

@@ -25,7 +25,7 @@ PHRASE_BREAK = re.compile(r"(?<=[,;:])\s+|\s+(?=[+−] )|(?<![+−=])\s+(?=\()|(
 # "ΣMp: G2·h1 + …"), is no place for a break: the line would end on the name, what it names on the next.
 NAME_BEFORE = re.compile(r"(?:^|[,;]\s+)[^\s\d,;:]+(?: [^\s\d,;:]+)?:$")
 # Where a piece still too wide breaks: between words, but not round "=", nor between a number and its unit,
-# nor between a sign and its term (nor after a name's colon, :data:`NAME_BEFORE`).
+# nor between a sign and its term.
 WORD_BREAK = re.compile(r"(?<![\d=+−])\s+(?![=\d])")
 # The pieces of a line broken between words are evened out in steps of this width (mm).
 EVENING_STEP_MM = 2.0
@@ -41,13 +41,7 @@ def fitted(line: str, width: float, size: float, weight: str = "normal") -> list
                    if not NAME_BEFORE.search(line, 0, cut.start()) and not _in_factored_term(line, cut.start())]
     pieces = _broken(line, phrase_cuts, width, span)
     return [word_piece for piece in pieces
-            for word_piece in (_evened(piece, _word_cuts(piece), width, span) if span(piece) > width else [piece])]
-
-
-def _word_cuts(piece: str) -> list[re.Match[str]]:
-    """Where a piece too wide breaks between words (:data:`WORD_BREAK`): not after a name's colon either, which
-    ended a narrow lever caption's line on "arrows:", its μF on the next, where the phrase alone was too wide."""
-    return [cut for cut in WORD_BREAK.finditer(piece) if not NAME_BEFORE.search(piece, 0, cut.start())]
+            for word_piece in (_evened(piece, WORD_BREAK, width, span) if span(piece) > width else [piece])]
 
 
 def _in_factored_term(line: str, at: int) -> bool:
@@ -61,12 +55,12 @@ def _in_factored_term(line: str, at: int) -> bool:
     return closed >= 0 and line.startswith("·", closed + 1)
 
 
-def _evened(line: str, cuts: list[re.Match[str]], width: float, span: Callable[[str], float]) -> list[str]:
-    """``line`` cut at ``cuts`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
-    pieces = _broken(line, cuts, width, span)
+def _evened(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
+    """``line`` cut at ``breaks`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
+    pieces = _broken(line, list(breaks.finditer(line)), width, span)
     narrowest = max(span(line) / len(pieces), *(span(piece) for piece in pieces[1:-1]), 0.0)
     for narrower in np.arange(narrowest, width, EVENING_STEP_MM):
-        even = _broken(line, cuts, float(narrower), span)
+        even = _broken(line, list(breaks.finditer(line)), float(narrower), span)
         if len(even) == len(pieces):
             return even
     return pieces
