@@ -69,9 +69,9 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     own = sheet_module.fewest_sheets_cuts
     calls: list[tuple] = []
 
-    def recorded(cuts, after, chosen, form):
-        calls.append((cuts, after, chosen, form))
-        return own(cuts, after, chosen, form)
+    def recorded(cuts, after, chosen, form, *rows_apart):
+        calls.append((cuts, after, chosen, form, rows_apart))
+        return own(cuts, after, chosen, form, *rows_apart)
 
     def timed_run(most: int, scratch: Path) -> float:
         calls.clear()
@@ -95,7 +95,9 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     if not calls:
         result["force_sheets"] = 0
         return result
-    cuts, after, chosen, form = calls[-1]  # the run's own: the μl choice's calls come before it
+    # The run's own: the μl choice's calls come before it.  Each sheet's rows apart are given to the greedy choice
+    # as the run gives them; the combinations below are of the cuts alone.
+    cuts, after, chosen, form, rows_apart = calls[-1]
     result.update(force_sheets=len(cuts), ways=[len(ways) for ways in cuts], sheet=chosen)
 
     def sheets_taken(parts) -> float:
@@ -109,7 +111,7 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     choices = {}
     for label, most in (("greedy/4", usual), (f"greedy/{MORE_CUTS}", MORE_CUTS), ("greedy/all", ALL_CUTS)):
         start = time.process_time()
-        parts = own([ways[:most] for ways in cuts], after, chosen, form)
+        parts = own([ways[:most] for ways in cuts], after, chosen, form, *rows_apart)
         used = time.process_time() - start
         choices[label] = {"sheets": sheets_taken(parts), "cpu_s": used, "of_run": used / base}
     # Every combination of the cuts, those of the sheets with one way fixed, until the budget is spent.

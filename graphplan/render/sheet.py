@@ -524,8 +524,8 @@ def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequenc
     cut whose drawings' area leaves no room for a sheet fewer
     (:func:`~graphplan.render.packing.area_allows`).
     """
-    ways_of = [[*ways, *([apart] if apart else [])] for ways, apart in
-               itertools.zip_longest(cuts, rows_apart[:len(cuts)], fillvalue=())]
+    ways_of = [[*ways, *([apart] if apart else [])] for ways, apart in itertools.zip_longest(cuts, rows_apart,
+                                                                                              fillvalue=())]
     # Each sheet's rows apart, by its index among its ways: None where it has none.
     apart_at = [len(ways) - 1 if len(ways) > len(own) else None for ways, own in zip(ways_of, cuts, strict=True)]
     picked = [0] * len(cuts)  # the way each sheet takes, by its index among its ways
@@ -576,14 +576,15 @@ def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequenc
                 saving(k, way)
     # Where no sheet's rows apart save one alone, several may together: the Stephenson six-bar's force sheets on A1
     # each left room on the other's sheets that only their rows apart could take, on three sheets with either apart
-    # and on two with both.  Every sheet's rows apart at once, then each sheet put back as it was where the set
-    # keeps its count without it, so that only the sheets the saving needs stand apart.
+    # and on two with both.  Every sheet's rows apart at once, then each sheet put back as it was, the first first,
+    # where the set keeps its count without it, so that only the sheets the saving needs stand apart, the later ones
+    # (as the rows apart of one sheet are tried) where either would do.
     together = [way if at is None else at for way, at in zip(picked, apart_at, strict=True)]
     changed = [k for k, way in enumerate(together) if way != picked[k]]
     if len(changed) > 1:
         taken = sheets_taken(together, fewest)
         if taken < fewest:
-            for k in reversed(changed):
+            for k in changed:
                 tried = [*together[:k], picked[k], *together[k + 1:]]
                 if sheets_taken(tried, taken + 1) <= taken:
                     together = tried
