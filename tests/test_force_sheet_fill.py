@@ -13,6 +13,7 @@ import pytest
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.render import force_rows
 from graphplan.render import sheet as sheet_module
 from graphplan.render.forces import group_id
 from graphplan.render.primitives import Arrow, Text, bounds_of
@@ -25,6 +26,16 @@ STANDARD = sorted(m * 10.0 ** p for p in range(-6, 6) for m in (1.0, 2.0, 2.5, 4
 def finer(scale):
     """The standard scale just below ``scale``, from the series itself."""
     return max(value for value in STANDARD if value < scale * (1 - 1e-9))
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _no_rows_apart():
+    """The force sheets as they stand where setting a sheet's rows apart saves no sheet: the starter's two force
+    sheets now share one A1, their rows apart, drawn at the record's scales (saving a sheet comes first,
+    tests/test_force_rows_apart_save_a_sheet.py); what is checked here is a sheet drawn larger where it has room."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(force_rows.Rows, "rows_apart", lambda self, fits: [])
+        yield
 
 
 @pytest.fixture(scope="module")

@@ -54,7 +54,8 @@ def lever_sheet(folder: Path, number: int) -> tuple[Path, str]:
     """The sheet that holds the lever of position ``number`` and its caption group's source."""
     for path in sorted(folder.glob("sheet_*.svg")):
         source = path.read_text(encoding="utf-8")
-        if match := re.search(rf'<g id="forces-{number}-lever-caption">(.*?)</g>', source, re.DOTALL):
+        # On a part of its own where the force sheet stands with its rows apart: ``forces-1-3-lever-caption``.
+        if match := re.search(rf'<g id="forces-{number}(?:-\d+)?-lever-caption">(.*?)</g>', source, re.DOTALL):
             return path, match.group(1)
     raise AssertionError(f"no lever of position {number} on the sheets")
 

@@ -40,7 +40,8 @@ def title_block_texts(path: Path) -> list[str]:
 
 def test_the_sheet_of_a_position_beside_the_load_diagrams_names_that_position(tmp_path):
     out = tmp_path / "out"
-    assert main(["run", str(FIXTURES / "engine_slider_crank.toml"), "--sheet", "A1", "--locale", "ru",
+    # The engine's load diagrams stood beside position 2's force analysis until its two force sheets shared one A1.
+    assert main(["run", str(FIXTURES / "offset_slider_crank.toml"), "--sheet", "A1", "--locale", "ru",
                  "--only", "sheets,load_diagrams,forces", "--out", str(out)]) == 0
     text = strings("ru")
     shared = 0
@@ -56,7 +57,7 @@ def test_the_sheet_of_a_position_beside_the_load_diagrams_names_that_position(tm
         # The name's lines, broken where the cell is narrower than it, read as the name.
         assert named in " ".join(title_block_texts(sheet)), sheet.name
         shared += shared_page
-    assert shared == 1  # the engine's load diagrams stand beside position 2's force analysis
+    assert shared == 1  # the offset slider-crank's load diagrams stand beside position 10's force analysis
 
 
 def test_a_page_of_two_positions_names_neither():
