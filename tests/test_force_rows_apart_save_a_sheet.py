@@ -141,7 +141,7 @@ def test_the_area_bound_never_refuses_a_packing_that_exists():
 
 
 @pytest.mark.parametrize("fixture", ["shaper_six_bar"])
-def test_the_force_sheets_take_no_sheet_more_than_their_drawings_need(fixture):
+def test_no_sheet_of_the_forces_is_left_nearly_empty_and_the_load_diagrams_come_last(fixture):
     """The shaper's six-bar on A1: its force sheets each took a sheet, and its load diagrams a third, a twentieth of
     it drawn on.  Now no sheet of the forces is left nearly empty, and the load diagrams stand on the last of them,
     after the force sheets whose values they give."""
