@@ -747,7 +747,8 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
         crank = crank_omega(scene.driver)
         told += [line for line in (delta_warning(scene.dynamics), speed_unit_warning(scene.dynamics, crank),
                                    synchronous_warning(scene.dynamics), gear_warning(scene.dynamics, crank),
-                                   rotor_inertia_warning(scene.dynamics))
+                                   rotor_inertia_warning(scene.dynamics,
+                                                         dynamics is not None and dynamics.asks_kilowatts()))
                  if line is not None] + speed_warnings(scene.dynamics)
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),

@@ -1025,12 +1025,14 @@ def synchronous_warning(spec: DynamicsSpec) -> str | None:
 SLOWEST_OWN_RUN_UP_S = 60.0
 
 
-def rotor_inertia_warning(spec: DynamicsSpec) -> str | None:
+def rotor_inertia_warning(spec: DynamicsSpec, kilowatts_asked: bool = False) -> str | None:
     """The command line's line where ``[dynamics]``' motor would take more than :data:`SLOWEST_OWN_RUN_UP_S` to run
     its own rotor up to its speed at its own torque (a Kloss motor's rated ones, a linear one's no-load speed and
     stall torque, J·ω/M): the rotor's inertia typed in kg·cm²; None for a constant motor, which has no speed of its
-    own, a motor with no rotor given, one that runs it up in time, or a Kloss motor whose power in kilowatts would
-    explain it (under 1000 W, and in time at a thousand times it)."""
+    own, a motor with no rotor given, or one that runs it up in time.  A Kloss motor under 1000 W that would run it up
+    in time at a thousand times its power may have its power in kilowatts instead: where the stall's line asks that
+    (``kilowatts_asked``) nothing is said here; elsewhere both are asked (a 750 W motor is as likely as a 750 kW one
+    typed 750, and a machine it starts tells no stall)."""
     from .machine_motion import KlossMotor, LinearMotor
 
     motor = getattr(spec.motion, "motor", None)
@@ -1044,17 +1046,19 @@ def rotor_inertia_warning(spec: DynamicsSpec) -> str | None:
     seconds = inertia * speed / torque
     if not seconds > SLOWEST_OWN_RUN_UP_S:
         return None
-    # A Kloss motor's power in kilowatts (4 for 4000 W) makes its torque a thousandth and the time a thousandfold:
-    # where that alone explains it, the kilowatts are asked where they show, the stall's line, not here as well.
-    if isinstance(motor, KlossMotor) and motor.power < 1000 and seconds / 1000 <= SLOWEST_OWN_RUN_UP_S:
+    # A Kloss motor's power in kilowatts (4 for 4000 W) makes its torque a thousandth and the time a thousandfold.
+    in_kilowatts = isinstance(motor, KlossMotor) and motor.power < 1000 and seconds / 1000 <= SLOWEST_OWN_RUN_UP_S
+    if in_kilowatts and kilowatts_asked:
         return None
     from .render.numerals import number
 
     key = f"{spec.where}.motor"
+    power = (f"; or {key}.power = {number(motor.power)} W typed in kilowatts? ({number(motor.power)} kW is "
+             f"{key}.power = {number(motor.power * 1000)})" if in_kilowatts else "")
     return (f"{key}.rotor_inertia = {number(inertia)} kg·m² takes the motor {number(seconds, 4)} s to run its own "
             f"rotor up at its own torque ({named} = {number(inertia)}·{number(speed, 4)}/{number(torque, 4)}), "
             f"where a motor's takes some milliseconds to a few seconds: kg·cm² typed for kg·m²? ({number(inertia)} "
-            f"kg·cm² is {key}.rotor_inertia = {number(inertia / 10_000)})")
+            f"kg·cm² is {key}.rotor_inertia = {number(inertia / 10_000)}){power}")
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:

@@ -211,6 +211,20 @@ class MachineDynamics:
             return f"{crank}°"
         return text["angle_and_turned"].format(angle=crank, turned=turned, number=self.first_position)
 
+    def asks_kilowatts(self) -> bool:
+        """Whether the stall's line asks if the motor's power was typed in kilowatts: a Kloss motor under 1000 W
+        that never starts the machine, which a thousand times its torque would.  Kloss' torque grows with P: such a
+        motor is one whose power was typed in kW ("4 kW" as power = 4), the likelier slip than a 4 W motor on a
+        press."""
+        from .machine_motion import Stall
+
+        motion = self.motion
+        if motion is None or motion.stalled_at is None or motion.stall is not Stall.NEVER_STARTS:
+            return False
+        power = getattr(self.spec.motion.motor, "power", None)
+        mr = self.machine.mr(float(motion.phi[-1]), 0.0)
+        return power is not None and power < 1000 and 1000 * motion.torque_at_rest > mr
+
     def stall_warning(self) -> str | None:
         """One line for the command line when the motor cannot keep the machine turning; its numbers the note's
         (:func:`~graphplan.render.numerals.number`), a clutch's and a brake's given ones too (a brake on at
@@ -236,12 +250,8 @@ class MachineDynamics:
                        f"{number(motion.torque_at_rest)} N·m, does not overcome the resistance there")
             if stall is Stall.NEVER_STARTS:
                 power = getattr(self.spec.motion.motor, "power", None)
-                # Kloss' torque grows with P: a motor a thousand times as strong that would start it is one whose
-                # power was typed in kW ("4 kW" as power = 4), the likelier slip than a 4 W motor on a press.
                 in_kilowatts = (f"; power = {power:g} W: kilowatts typed for watts? (the scene's power is in W, "
-                                f"{power:g} kW is power = {power * 1000:g})"
-                                if power is not None and power < 1000 and 1000 * motion.torque_at_rest > mr
-                                else "")
+                                f"{power:g} kW is power = {power * 1000:g})" if self.asks_kilowatts() else "")
                 # At rest the shaft gets u·M(0): a ratio typed the wrong way up (the shaft's speed over the motor's)
                 # gives it u² of what 1/u would, and is asked about where 1/u would start the machine.  Where the gear
                 # line (self.gear) tells the ratio that fits the machine's speed, and the advice points to it, the

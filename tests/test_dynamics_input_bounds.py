@@ -313,3 +313,20 @@ def test_a_kloss_motors_power_in_kilowatts_is_left_to_the_stall_not_blamed_on_it
     lines = _warnings(tmp_path, capsys, _press(KLOSS, power="4.0"))
     assert not [line for line in lines if "rotor_inertia" in line]
     assert sum("kilowatts typed for watts?" in line for line in lines) == 1
+
+
+def test_a_sub_kilowatt_kloss_motors_rotor_in_kg_cm2_is_asked_of_with_its_power_too():
+    # 750 W at 1440 rpm: MN = 750/150.80 = 4.9736 N·m; J = 20 (kg·cm² meant) takes 20·150.80/4.9736 = 606 s, which
+    # a power in kilowatts (750 kW, 0.606 s) would explain as well as a rotor in kg·cm² (0.002 kg·m², 0.061 s).
+    # The scene as read, before any stall can tell of kilowatts: both are asked, neither left unsaid.
+    rated = 1440 * math.pi / 30
+    seconds = 20.0 * rated / (750.0 / rated)
+    (line,) = [line for line in _told_of_the_scene(_press(KLOSS, power="750.0", rotor_inertia="20.0"))
+               if "rotor_inertia" in line]
+    assert _run_up(line) == pytest.approx(seconds, rel=1e-3)
+    assert "(20 kg·cm² is dynamics.motor.rotor_inertia = 0.002)" in line
+    assert line.endswith("; or dynamics.motor.power = 750 W typed in kilowatts? (750 kW is dynamics.motor.power = "
+                         "750000)")
+    # A 4 kW motor's rotor in kg·cm² is no question of its power.
+    (line,) = [line for line in _told_of_the_scene(_press(KLOSS, rotor_inertia="200.0")) if "rotor_inertia" in line]
+    assert "kilowatts" not in line
