@@ -29,8 +29,11 @@ import contextlib
 import functools
 import itertools
 import math
+import re
 from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
+
+import shapely
 
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
@@ -74,15 +77,19 @@ from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import (
     MAIN,
     Arrow,
+    Circle,
     Layer,
     Polyline,
     Primitive,
     Stroke,
     Text,
     bounds,
+    bounds_of,
+    moved,
     moved_layers,
     prefixed,
     renamed_layer,
+    text_extent,
     text_width,
 )
 from .svg import to_svg
@@ -97,7 +104,7 @@ from .title_block import (
     scale_text,
     title_block,
 )
-from .wrapping import fitted
+from .wrapping import fitted, joined
 
 # A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
 # this to save a sheet would run its outlines and position numbers together: μl is made no larger for fewer
@@ -1740,12 +1747,88 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         for panel, rect, (dx, dy) in page.placed:
             layers.extend(prefixed(moved_layers(panel.drawn_layers(), dx, dy), panel.name))
             placed[panel.name] = rect
+        layers = _plan_names_on_one_line(layers, page)
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
         if page.corner is not None:
             layers.append(Layer("sheet-designation", tuple(corner_box(form, fields.designation, page.corner))))
         sheets.append(Sheet(sheet, page.size, layers, page.frame, page.block, placed, first + k, count))
     return sheets
+
+
+# A plan's caption on a sheet, by its layer's name there (a plan sheet's whole or its plan standing apart).
+_PLAN_CAPTION = re.compile(r"^plan-\d+-(?:velocity|acceleration)-caption$")
+# How far (mm) a plan's name set on one line keeps from the ink round it: beside it two cap heights, so that two
+# captions on one line read as two; above and below one, less than its own drawing stands over it.
+_ONE_LINE_CLEARANCE_MM = (2 * plan_layout.CAPTION_SIZE, plan_layout.CAPTION_SIZE)
+
+
+def _plan_names_on_one_line(layers: Sequence[Layer], page: Page) -> list[Layer]:
+    """A packed page's ``layers`` with each plan's caption whose name is broken over lines (``_name_lines``) set
+    with its name on one line, the lines under it raised, where they keep :data:`_ONE_LINE_CLEARANCE_MM` from every
+    other ink of the page and stay in the room the page gives its drawings.
+
+    The name is broken to the room its drawing or the plan sheet's row gives it before the drawings are placed, and
+    the packing keeps the broken form, which leaves the most room: the slotted lever's A1 set "Acceleration plan, /
+    position 4" on two lines with nothing beside it for 200 mm.  Only once placed is the room round it known.
+    """
+    out = list(layers)
+    for k, layer in enumerate(out):
+        if not _PLAN_CAPTION.match(layer.name) or not all(isinstance(item, Text) for item in layer.items):
+            continue
+        texts: list[Text] = list(layer.items)  # type: ignore[arg-type]
+        broken = next((n for n, item in enumerate(texts) if item.weight != "bold"), len(texts))
+        if broken < 2:
+            continue
+        rise = texts[0].at[1] - texts[1].at[1]
+        one_line = (replace(texts[0], text=joined([item.text for item in texts[:broken]])),
+                    *(moved(item, 0.0, (broken - 1) * rise) for item in texts[broken:]))
+        if _clear_of_ink(one_line, out[:k] + out[k + 1:], page):
+            out[k] = Layer(layer.name, one_line)
+    return out
+
+
+def _clear_of_ink(texts: Sequence[Text], others: Sequence[Layer], page: Page) -> bool:
+    """Whether ``texts`` stand in ``page``'s area, clear of its title block (and графа 26), and each at least
+    :data:`_ONE_LINE_CLEARANCE_MM` from every item of ``others``, measured to its lines, not their bounds."""
+    boxes = [text_extent(item) for item in texts]
+    ax0, ay0, ax1, ay1 = page.area
+    if any(x0 < ax0 or y0 < ay0 or x1 > ax1 or y1 > ay1 for x0, y0, x1, y1 in boxes):
+        return False
+    if any(_boxes_meet(box, obstacle) for box in boxes for obstacle in page.obstacles()):
+        return False
+    across, up = _ONE_LINE_CLEARANCE_MM
+    grown = [(x0 - across, y0 - up, x1 + across, y1 + up) for x0, y0, x1, y1 in boxes]
+    kept = shapely.union_all([shapely.box(*box) for box in grown])
+    reach = kept.bounds
+    for layer in others:
+        if not layer.items or not _boxes_meet(bounds([layer]), reach):
+            continue
+        for item in layer.items:
+            if _boxes_meet(bounds_of([item]), reach) and kept.intersects(_ink(item)):
+                return False
+    return True
+
+
+def _boxes_meet(a: Sequence[float], b: Sequence[float]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _ink(item: Primitive) -> shapely.Geometry:
+    """Where ``item`` puts ink on the paper: a line along its points, a filled shape whole, a text its box."""
+    if isinstance(item, Polyline):
+        points = item.points
+        if item.closed and item.fill and len(points) >= 3:
+            return shapely.Polygon(points)
+        if len(points) == 1:
+            return shapely.Point(points[0])
+        return shapely.LineString((*points, points[0]) if item.closed else points)
+    if isinstance(item, Arrow):
+        return shapely.LineString((item.start, item.end))
+    if isinstance(item, Circle):
+        disc = shapely.Point(item.centre).buffer(item.radius)
+        return disc if item.fill else disc.exterior
+    return shapely.box(*text_extent(item))
 
 
 # The panels that are a sheet kind's own drawings, by their names' start: beside them a page may hold drawings of

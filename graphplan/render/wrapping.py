@@ -11,7 +11,7 @@ wide is then broken between words, into pieces as even as can be, never inside
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -42,6 +42,20 @@ def fitted(line: str, width: float, size: float, weight: str = "normal") -> list
     pieces = _broken(line, phrase_cuts, width, span)
     return [word_piece for piece in pieces
             for word_piece in (_evened(piece, WORD_BREAK, width, span) if span(piece) > width else [piece])]
+
+
+def joined(pieces: Sequence[str]) -> str:
+    """The line :func:`fitted` broke into ``pieces``, given back: joined with the space each was cut at, but none
+    after Chinese's full-width punctuation or before its bracket, where it cuts at none."""
+    line = ""
+    for piece in pieces:
+        spaced = line and not _CUT_AT_NO_SPACE_BEFORE.search(line) and not piece.startswith("（")
+        line += (" " if spaced else "") + piece
+    return line
+
+
+# The ends of a piece after which :data:`PHRASE_BREAK` cut at no space: Chinese's full-width comma, semicolon, colon.
+_CUT_AT_NO_SPACE_BEFORE = re.compile(r"[，；、：]$")
 
 
 def _in_factored_term(line: str, at: int) -> bool:
