@@ -7,7 +7,8 @@ room round it was known.
 
 The room is measured here apart from the sheet's own check: every other ink of the sheet sampled as points along its
 lines (a text and a pin as their boxes), against the caption's lines as the sheet's text-width function measures
-them, grown by the clearance a caption set on one line keeps.
+them, grown by the clearance a caption set on one line keeps; and the bounds of the other drawings placed, which the
+packing keeps apart and a caption's drawing's bounds widened by it must not meet.
 """
 
 from __future__ import annotations
@@ -41,7 +42,7 @@ STEP_MM = 0.25
 CASES = [*((f"new:{kind}", "en", None) for kind in ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad")),
          ("new:crank-rocker", "ru", None), ("new:crank-rocker", "zh", None), ("new:slotted-lever", "ru", "A3"),
          ("quick_return_slotted_lever.toml", "en", "A2"), ("stephenson_six_bar.toml", "en", None),
-         ("triad_class_iii.toml", "ru", None)]
+         ("triad_class_iii.toml", "ru", None), ("ratchet_crank_rocker.toml", "ru", None)]
 
 
 def scene_of(name: str, locale: str):
@@ -78,11 +79,16 @@ def meets(box, points: np.ndarray, boxes: np.ndarray) -> bool:
     return bool(inside.any() or crossing.any())
 
 
-def fits(texts, sheet, points, boxes, clearance) -> bool:
+def fits(texts, sheet, own, drawings, points, boxes, clearance) -> bool:
     """Whether ``texts`` stand in the sheet's field (its frame less the padding kept from it), off the title block,
-    and ``clearance`` (across, up) from every other ink."""
+    widen the bounds of their drawing ``own`` into none of the other ``drawings``, and keep ``clearance`` (across,
+    up) from every other ink."""
     fx0, fy0, fx1, fy1 = sheet.frame
     bx0, by0, bx1, by1 = sheet.title_block
+    extents = np.array([own, *(text_extent(item) for item in texts)])
+    widened = (*extents[:, :2].min(axis=0), *extents[:, 2:].max(axis=0))
+    if meets(widened, np.empty((0, 2)), np.asarray(drawings, dtype=float).reshape(-1, 4)):
+        return False
     for item in texts:
         x0, y0, x1, y1 = text_extent(item)
         if x0 < fx0 + PADDING_MM or y0 < fy0 + PADDING_MM or x1 > fx1 - PADDING_MM or y1 > fy1 - PADDING_MM:
@@ -96,7 +102,8 @@ def fits(texts, sheet, points, boxes, clearance) -> bool:
 
 
 def captions_of(name, locale, sheet_format):
-    """Each plan caption of the kinematics sheets: (sheet, its texts, the name on one line, the other ink)."""
+    """Each plan caption of the kinematics sheets: (sheet, its texts, the name on one line, the bounds of its drawing
+    as the sheet gives them, those of the other drawings placed, the other ink)."""
     analysis = with_length_scale(analyse(scene_of(name, locale)))
     text = strings(locale)
     found = []
@@ -106,7 +113,10 @@ def captions_of(name, locale, sheet_format):
             number, field = CAPTION.match(layer.name).groups()
             others = [other for j, other in enumerate(sheet.layers)
                       if j != k and other.name not in ("sheet-frame", "title-block")]
-            found.append((sheet, layer.items, text[CAPTION_KEYS[field]].format(number=number), ink_of(others)))
+            own = max((panel for panel in sheet.panels if layer.name.startswith(panel + "-")), key=len)
+            drawings = [rect for panel, rect in sheet.panels.items() if panel != own]
+            found.append((sheet, layer.items, text[CAPTION_KEYS[field]].format(number=number), sheet.panels[own],
+                          drawings, ink_of(others)))
     return found
 
 
@@ -114,13 +124,14 @@ def captions_of(name, locale, sheet_format):
 def test_a_plan_name_on_two_lines_only_where_one_would_not_fit(name, locale, sheet_format):
     captions = captions_of(name, locale, sheet_format)
     assert captions, "no plan captions on the sheets: the test tests nothing"
-    for sheet, texts, one_line, (points, boxes) in captions:
+    for sheet, texts, one_line, own, drawings, (points, boxes) in captions:
         named = [item for item in texts if item.weight == "bold"]
         # The name as set: its lines are the locale's words for it, broken or not.
         assert "".join(item.text for item in named).replace(" ", "") == one_line.replace(" ", "")
         if len(named) == 1:
-            # On one line: it meets no other ink, and stands in the field off the title block.
-            assert fits(texts, sheet, points, boxes, (0.0, 0.0)), (sheet.number, one_line)
+            # On one line: it meets no other ink, stands in the field off the title block, and in its drawing's
+            # bounds as the sheet gives them, which meet no other drawing's.
+            assert fits(texts, sheet, own, drawings, points, boxes, (0.0, 0.0)), (sheet.number, one_line)
             continue
         # On two lines: the name on one line, its scale under it a line higher, would leave the field or come
         # nearer other ink than the clearance.
@@ -130,11 +141,11 @@ def test_a_plan_name_on_two_lines_only_where_one_would_not_fit(name, locale, she
         joined = [dataclasses.replace(texts[0], text=one_line),
                   *(dataclasses.replace(item, at=(item.at[0], item.at[1] + (len(named) - 1) * rise))
                     for item in texts[len(named):])]
-        assert not fits(joined, sheet, points, boxes, CLEARANCE), (sheet.number, one_line)
+        assert not fits(joined, sheet, own, drawings, points, boxes, CLEARANCE), (sheet.number, one_line)
 
 
 def test_the_slotted_lever_names_position_4s_acceleration_plan_on_one_line():
     """The sheet the fault was seen on: 200 mm of room beside a name broken over two lines."""
     captions = captions_of("new:slotted-lever", "en", None)
-    named = {one_line: [item.text for item in texts if item.weight == "bold"] for _, texts, one_line, _ in captions}
+    named = {one_line: [item.text for item in texts if item.weight == "bold"] for _, texts, one_line, _, _, _ in captions}
     assert named["Acceleration plan, position 4"] == ["Acceleration plan, position 4"]

@@ -1747,7 +1747,7 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         for panel, rect, (dx, dy) in page.placed:
             layers.extend(prefixed(moved_layers(panel.drawn_layers(), dx, dy), panel.name))
             placed[panel.name] = rect
-        layers = _plan_names_on_one_line(layers, page)
+        layers = _plan_names_on_one_line(layers, page, placed)
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
         if page.corner is not None:
@@ -1763,10 +1763,11 @@ _PLAN_CAPTION = re.compile(r"^plan-\d+-(?:velocity|acceleration)-caption$")
 _ONE_LINE_CLEARANCE_MM = (2 * plan_layout.CAPTION_SIZE, plan_layout.CAPTION_SIZE)
 
 
-def _plan_names_on_one_line(layers: Sequence[Layer], page: Page) -> list[Layer]:
+def _plan_names_on_one_line(layers: Sequence[Layer], page: Page, placed: dict[str, Rect]) -> list[Layer]:
     """A packed page's ``layers`` with each plan's caption whose name is broken over lines (``_name_lines``) set
     with its name on one line, the lines under it raised, where they keep :data:`_ONE_LINE_CLEARANCE_MM` from every
-    other ink of the page and stay in the room the page gives its drawings.
+    other ink of the page, stay in the room the page gives its drawings and widen their drawing's bounds into no
+    other's; ``placed``, the bounds of each drawing by its name, is widened with them.
 
     The name is broken to the room its drawing or the plan sheet's row gives it before the drawings are placed, and
     the packing keeps the broken form, which leaves the most room: the slotted lever's A1 set "Acceleration plan, /
@@ -1778,14 +1779,27 @@ def _plan_names_on_one_line(layers: Sequence[Layer], page: Page) -> list[Layer]:
             continue
         texts: list[Text] = list(layer.items)  # type: ignore[arg-type]
         broken = next((n for n, item in enumerate(texts) if item.weight != "bold"), len(texts))
-        if broken < 2:
+        own = max((name for name in placed if layer.name.startswith(name + "-")), key=len, default=None)
+        if broken < 2 or own is None:
             continue
         rise = texts[0].at[1] - texts[1].at[1]
         one_line = (replace(texts[0], text=joined([item.text for item in texts[:broken]])),
                     *(moved(item, 0.0, (broken - 1) * rise) for item in texts[broken:]))
-        if _clear_of_ink(one_line, out[:k] + out[k + 1:], page):
+        # The drawings' bounds stay apart as the packing placed them: the ratchet's Russian acceleration plan on
+        # one line, 40 mm under the kinematic diagrams' bounds, widened its plan sheet's, as tall as the diagrams',
+        # into theirs.
+        widened = _union_of((placed[own], *map(text_extent, one_line)))
+        others = [rect for name, rect in placed.items() if name != own]
+        if not any(_boxes_meet(widened, rect) for rect in others) \
+                and _clear_of_ink(one_line, out[:k] + out[k + 1:], page):
             out[k] = Layer(layer.name, one_line)
+            placed[own] = widened
     return out
+
+
+def _union_of(boxes: Sequence[Sequence[float]]) -> Rect:
+    return (min(box[0] for box in boxes), min(box[1] for box in boxes),
+            max(box[2] for box in boxes), max(box[3] for box in boxes))
 
 
 def _clear_of_ink(texts: Sequence[Text], others: Sequence[Layer], page: Page) -> bool:
