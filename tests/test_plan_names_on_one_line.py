@@ -7,8 +7,8 @@ room round it was known.
 
 The room is measured here apart from the sheet's own check: every other ink of the sheet sampled as points along its
 lines (a text and a pin as their boxes), against the caption's lines as the sheet's text-width function measures
-them, grown by the clearance a caption set on one line keeps; and the bounds of the other drawings placed, which the
-packing keeps apart and a caption's drawing's bounds widened by it must not meet.
+them, grown by the clearance a caption set on one line keeps; and the bounds of the other drawings placed, which a
+caption's drawing's bounds widened by it must not meet.
 """
 
 from __future__ import annotations
@@ -81,14 +81,16 @@ def meets(box, points: np.ndarray, boxes: np.ndarray) -> bool:
 
 def fits(texts, sheet, own, drawings, points, boxes, clearance) -> bool:
     """Whether ``texts`` stand in the sheet's field (its frame less the padding kept from it), off the title block,
-    widen the bounds of their drawing ``own`` into none of the other ``drawings``, and keep ``clearance`` (across,
-    up) from every other ink."""
+    widen the bounds of their drawing ``own`` as placed into none of the other ``drawings``', and keep ``clearance``
+    (across, up) from every other ink."""
     fx0, fy0, fx1, fy1 = sheet.frame
     bx0, by0, bx1, by1 = sheet.title_block
     extents = np.array([own, *(text_extent(item) for item in texts)])
-    widened = (*extents[:, :2].min(axis=0), *extents[:, 2:].max(axis=0))
-    if meets(widened, np.empty((0, 2)), np.asarray(drawings, dtype=float).reshape(-1, 4)):
-        return False
+    wx0, wy0 = extents[:, :2].min(axis=0)
+    wx1, wy1 = extents[:, 2:].max(axis=0)
+    for x0, y0, x1, y1 in drawings:
+        if wx0 < x1 and x0 < wx1 and wy0 < y1 and y0 < wy1:
+            return False
     for item in texts:
         x0, y0, x1, y1 = text_extent(item)
         if x0 < fx0 + PADDING_MM or y0 < fy0 + PADDING_MM or x1 > fx1 - PADDING_MM or y1 > fy1 - PADDING_MM:
@@ -115,8 +117,8 @@ def captions_of(name, locale, sheet_format):
                       if j != k and other.name not in ("sheet-frame", "title-block")]
             own = max((panel for panel in sheet.panels if layer.name.startswith(panel + "-")), key=len)
             drawings = [rect for panel, rect in sheet.panels.items() if panel != own]
-            found.append((sheet, layer.items, text[CAPTION_KEYS[field]].format(number=number), sheet.panels[own],
-                          drawings, ink_of(others)))
+            found.append((sheet, layer.items, text[CAPTION_KEYS[field]].format(number=number),
+                          sheet.panels[own], drawings, ink_of(others)))
     return found
 
 
@@ -129,8 +131,8 @@ def test_a_plan_name_on_two_lines_only_where_one_would_not_fit(name, locale, she
         # The name as set: its lines are the locale's words for it, broken or not.
         assert "".join(item.text for item in named).replace(" ", "") == one_line.replace(" ", "")
         if len(named) == 1:
-            # On one line: it meets no other ink, stands in the field off the title block, and in its drawing's
-            # bounds as the sheet gives them, which meet no other drawing's.
+            # On one line: it meets no other ink, stands in the field off the title block, and widens its
+            # drawing's bounds into no other's.
             assert fits(texts, sheet, own, drawings, points, boxes, (0.0, 0.0)), (sheet.number, one_line)
             continue
         # On two lines: the name on one line, its scale under it a line higher, would leave the field or come

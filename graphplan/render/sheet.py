@@ -1763,37 +1763,38 @@ _PLAN_CAPTION = re.compile(r"^plan-\d+-(?:velocity|acceleration)-caption$")
 _ONE_LINE_CLEARANCE_MM = (2 * plan_layout.CAPTION_SIZE, plan_layout.CAPTION_SIZE)
 
 
-def _plan_names_on_one_line(layers: Sequence[Layer], page: Page, placed: dict[str, Rect]) -> list[Layer]:
+def _plan_names_on_one_line(layers: Sequence[Layer], page: Page, placed: Mapping[str, Rect]) -> list[Layer]:
     """A packed page's ``layers`` with each plan's caption whose name is broken over lines (``_name_lines``) set
     with its name on one line, the lines under it raised, where they keep :data:`_ONE_LINE_CLEARANCE_MM` from every
-    other ink of the page, stay in the room the page gives its drawings and widen their drawing's bounds into no
-    other's; ``placed``, the bounds of each drawing by its name, is widened with them.
+    other ink of the page, stay in the room the page gives its drawings and widen their drawing's bounds (``placed``,
+    by its name, as the packing placed it) into no other's.  A caption may reach into the room the packing keeps
+    round a drawing, where no ink is: the slotted lever's "Acceleration plan, position 4" stands 20 mm short of the
+    bounds of position 11's plan sheet, placed 35 mm off, but 80 mm under them.
 
     The name is broken to the room its drawing or the plan sheet's row gives it before the drawings are placed, and
     the packing keeps the broken form, which leaves the most room: the slotted lever's A1 set "Acceleration plan, /
     position 4" on two lines with nothing beside it for 200 mm.  Only once placed is the room round it known.
     """
     out = list(layers)
+    inked = dict(placed)
     for k, layer in enumerate(out):
         if not _PLAN_CAPTION.match(layer.name) or not all(isinstance(item, Text) for item in layer.items):
             continue
         texts: list[Text] = list(layer.items)  # type: ignore[arg-type]
         broken = next((n for n, item in enumerate(texts) if item.weight != "bold"), len(texts))
-        own = max((name for name in placed if layer.name.startswith(name + "-")), key=len, default=None)
+        own = max((name for name in inked if layer.name.startswith(name + "-")), key=len, default=None)
         if broken < 2 or own is None:
             continue
         rise = texts[0].at[1] - texts[1].at[1]
         one_line = (replace(texts[0], text=joined([item.text for item in texts[:broken]])),
                     *(moved(item, 0.0, (broken - 1) * rise) for item in texts[broken:]))
-        # The drawings' bounds stay apart as the packing placed them: the ratchet's Russian acceleration plan on
-        # one line, 40 mm under the kinematic diagrams' bounds, widened its plan sheet's, as tall as the diagrams',
-        # into theirs.
-        widened = _union_of((placed[own], *map(text_extent, one_line)))
-        others = [rect for name, rect in placed.items() if name != own]
-        if not any(_boxes_meet(widened, rect) for rect in others) \
+        # The drawings' bounds stay apart: the ratchet's Russian acceleration plan on one line, 40 mm under the
+        # kinematic diagrams' bounds, widened its plan sheet's, as tall as the diagrams', into theirs.
+        widened = _union_of((inked[own], *map(text_extent, one_line)))
+        if not any(_boxes_meet(widened, rect) for name, rect in inked.items() if name != own) \
                 and _clear_of_ink(one_line, out[:k] + out[k + 1:], page):
+            inked[own] = widened
             out[k] = Layer(layer.name, one_line)
-            placed[own] = widened
     return out
 
 
