@@ -2,6 +2,8 @@
 import compileall
 from pathlib import Path
 
+import pytest
+
 PACKAGE = Path(__file__).resolve().parents[1] / "graphplan"
 
 
@@ -11,3 +13,15 @@ def pytest_configure(config):
     # bytecode it did not write, so compiling once here, before the workers start, spares every child that work.
     if not hasattr(config, "workerinput"):
         compileall.compile_dir(PACKAGE, quiet=2)
+
+
+@pytest.fixture(scope="module")
+def no_rows_apart():
+    """The force sheets as they stand where setting a sheet's rows apart saves no sheet (saving a sheet comes first,
+    tests/test_force_rows_apart_save_a_sheet.py, and the course sheet then draws its force sheets at the record's
+    scales): for a module that checks a force sheet the course sheet draws larger where it has room."""
+    from graphplan.render import force_rows
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(force_rows.Rows, "rows_apart", lambda self, fits: [])
+        yield

@@ -13,7 +13,6 @@ import pytest
 
 import graphplan
 from graphplan.analysis import analyse
-from graphplan.render import force_rows
 from graphplan.render import sheet as sheet_module
 from graphplan.render.forces import group_id
 from graphplan.render.primitives import Arrow, Text, bounds_of
@@ -28,14 +27,9 @@ def finer(scale):
     return max(value for value in STANDARD if value < scale * (1 - 1e-9))
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _no_rows_apart():
-    """The force sheets as they stand where setting a sheet's rows apart saves no sheet: the starter's two force
-    sheets now share one A1, their rows apart, drawn at the record's scales (saving a sheet comes first,
-    tests/test_force_rows_apart_save_a_sheet.py); what is checked here is a sheet drawn larger where it has room."""
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(force_rows.Rows, "rows_apart", lambda self, fits: [])
-        yield
+# The starter's two force sheets share one A1 with their rows apart, drawn at the record's scales: what is
+# checked here is a sheet drawn larger where it has room.
+pytestmark = pytest.mark.usefixtures("no_rows_apart")
 
 
 @pytest.fixture(scope="module")

@@ -23,7 +23,6 @@ import numpy as np
 import pytest
 
 import graphplan
-from graphplan.render import force_rows
 from graphplan.render.force_marks import group_id
 from graphplan.run import run
 from graphplan.starters import starter
@@ -53,14 +52,9 @@ def stated(group: ElementTree.Element) -> list[float]:
     return [float(value) for text in group.iter(f"{SVG}text") for value in FORCE_SCALE.findall(text.text or "")]
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _no_rows_apart():
-    """The force sheets as they stand where setting a sheet's rows apart saves no sheet: the starter's two force
-    sheets now share one A1, their rows apart, drawn at the record's scales (saving a sheet comes first,
-    tests/test_force_rows_apart_save_a_sheet.py); what is checked here is a sheet drawn larger where it has room."""
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(force_rows.Rows, "rows_apart", lambda self, fits: [])
-        yield
+# The starter's two force sheets share one A1 with their rows apart, drawn at the record's scales: what is
+# checked here is a sheet drawn larger where it has room.
+pytestmark = pytest.mark.usefixtures("no_rows_apart")
 
 
 @pytest.fixture(scope="module", params=["crank-rocker", "slider-crank"])

@@ -21,7 +21,6 @@ import pytest
 from drawn_lines import arrow_length
 
 from graphplan.analysis import analyse
-from graphplan.render import force_rows
 from graphplan.run import run
 from graphplan.scene import loads
 
@@ -62,15 +61,9 @@ def _sheets(folder, friction):
     return captions
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _no_rows_apart():
-    """The force sheets as they stand where setting a sheet's rows apart saves no sheet: with friction at C, the
-    rows of position 5's and 10's sheets with friction apart beside the others save one, drawn at the record's
-    scales (tests/test_force_rows_apart_save_a_sheet.py), and the drawings read here, larger than the record, are
-    those of the sheets standing whole."""
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(force_rows.Rows, "rows_apart", lambda self, fits: [])
-        yield
+# With friction at C, the rows of position 5's and 10's sheets with friction apart beside the others save a sheet,
+# drawn at the record's scales; the drawings read here, larger than the record, are those of the sheets whole.
+pytestmark = pytest.mark.usefixtures("no_rows_apart")
 
 
 @pytest.fixture(scope="module")
