@@ -13,6 +13,7 @@ from __future__ import annotations
 import itertools
 
 import pytest
+from test_packing import FORM, HEADING_MM, SHEET, box, part
 
 import graphplan
 from graphplan import deliverables
@@ -21,24 +22,10 @@ from graphplan.render.drawings import with_length_scale
 from graphplan.render.force_rows import HEADING_LAYER
 from graphplan.render.formats import PADDING_MM, page_geometry
 from graphplan.render.packing import GAP_MM, Panel, area_allows, pack
-from graphplan.render.primitives import MAIN, Layer, Polyline
 from graphplan.render.sheet import course_sheets, fewest_sheets_cuts
 
-SHEET, FORM = "A3", "iso"
-HEADING_MM = 20.0
 # A force sheet of two rows, a group with its polygon over the lever, and the load diagrams after it.
 ROW_MM, LEVER_MM, LOADS_MM = (300.0, 90.0), (150.0, 80.0), (200.0, 90.0)
-
-
-def box(name: str, width: float, height: float, top: float = 0.0) -> Layer:
-    corners = ((0.0, top - height), (width, top - height), (width, top), (0.0, top))
-    return Layer(name, (Polyline(corners, MAIN, closed=True),))
-
-
-def headed(name: str, width: float, height: float, continues: str = "") -> Panel:
-    """A drawing ``height`` mm tall under a heading :data:`HEADING_MM` tall, as a force sheet's part stands."""
-    return Panel(name, (box(HEADING_LAYER, width, HEADING_MM, HEADING_MM), box("drawing", width, height)),
-                 continues=continues)
 
 
 def whole() -> Panel:
@@ -50,7 +37,7 @@ def whole() -> Panel:
 
 
 def rows_apart() -> list[Panel]:
-    return [headed("forces-5", *ROW_MM), headed("forces-5-2", *LEVER_MM, continues="forces-5")]
+    return [part("forces-5", *ROW_MM), part("forces-5-2", *LEVER_MM, continues="forces-5")]
 
 
 def loads(width: float = LOADS_MM[0], height: float = LOADS_MM[1]) -> Panel:
@@ -117,14 +104,14 @@ def test_the_load_diagrams_stand_after_the_force_sheets_unless_only_an_earlier_s
     # Two force sheets as wide as the sheet, each on a sheet of its own: under each there is room left for the load
     # diagrams above the title block.
     short = ay1 - by1 - HEADING_MM - GAP_MM - LOADS_MM[1]
-    first = headed("forces-2", ax1 - ax0, short)
-    second = headed("forces-8", ax1 - ax0, short)
+    first = part("forces-2", ax1 - ax0, short)
+    second = part("forces-8", ax1 - ax0, short)
     pages = pack([first, second, loads()], SHEET, FORM)
     assert [[panel.name for panel, _, _ in page.placed] for page in pages] == [
         ["forces-2"], ["forces-8", "load-diagrams"]]
     # The second fills the room above the title block: the first's sheet takes them, which saves the sheet they
     # would open.
-    tall = headed("forces-8", ax1 - ax0, ay1 - by1 - HEADING_MM)
+    tall = part("forces-8", ax1 - ax0, ay1 - by1 - HEADING_MM)
     pages = pack([first, tall, loads()], SHEET, FORM)
     assert [[panel.name for panel, _, _ in page.placed] for page in pages] == [
         ["forces-2", "load-diagrams"], ["forces-8"]]

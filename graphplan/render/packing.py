@@ -388,7 +388,8 @@ def _reads_after(rect: Rect, earlier: Rect) -> bool:
     return rect[0] >= earlier[2] - 1e-6 or rect[3] < earlier[3] - 1e-6
 
 
-def _overlap(a: Rect, b: Rect) -> bool:
+def overlap(a: Rect, b: Rect) -> bool:
+    """Whether rectangles ``a`` and ``b`` (xmin, ymin, xmax, ymax) share some area."""
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
@@ -775,7 +776,7 @@ def _under_heading(heading: Panel, page: Page, gap: float, sheet: str, form: str
     spots = [(x, top + gap, x + width(heading), top + gap + height(heading))
              for x in (left, *([lowered.corner[2] + PADDING_MM] if lowered.corner else []))]
     rect = next((spot for spot in spots if spot[2] <= fresh.area[2] + 1e-6
-                 and not any(_overlap(spot, box) for box in lowered.obstacles())), None)
+                 and not any(overlap(spot, box) for box in lowered.obstacles())), None)
     if rect is None:
         return None
     x0, y0, _, _ = heading.extent
@@ -854,7 +855,7 @@ def _centre(page: Page) -> None:
     steps = 20
     for k in range(steps, 0, -1):
         dx, dy = towards[0] * k / steps, towards[1] * k / steps
-        if not any(_overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), box) for r in rects for box in boxes):
+        if not any(overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), box) for r in rects for box in boxes):
             page.placed = [(panel, (r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), (ox + dx, oy + dy))
                            for panel, r, (ox, oy) in page.placed]
             return

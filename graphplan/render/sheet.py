@@ -71,13 +71,24 @@ from .formats import (
     page_geometry,
     usual_orientations,
 )
+from .labels import obstacles_of
 from .numerals import scale_factor
-from .packing import Page, Panel, area_allows, bigger_holding, height, pack, rooms, smallest_drawings, width
+from .packing import (
+    Page,
+    Panel,
+    area_allows,
+    bigger_holding,
+    height,
+    overlap,
+    pack,
+    rooms,
+    smallest_drawings,
+    width,
+)
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import (
     MAIN,
     Arrow,
-    Circle,
     Layer,
     Polyline,
     Primitive,
@@ -1791,7 +1802,7 @@ def _plan_names_on_one_line(layers: Sequence[Layer], page: Page, placed: Mapping
         # The drawings' bounds stay apart: the ratchet's Russian acceleration plan on one line, 40 mm under the
         # kinematic diagrams' bounds, widened its plan sheet's, as tall as the diagrams', into theirs.
         widened = _union_of((inked[own], *map(text_extent, one_line)))
-        if not any(_boxes_meet(widened, rect) for name, rect in inked.items() if name != own) \
+        if not any(overlap(widened, rect) for name, rect in inked.items() if name != own) \
                 and _clear_of_ink(one_line, out[:k] + out[k + 1:], page):
             inked[own] = widened
             out[k] = Layer(layer.name, one_line)
@@ -1810,40 +1821,19 @@ def _clear_of_ink(texts: Sequence[Text], others: Sequence[Layer], page: Page) ->
     ax0, ay0, ax1, ay1 = page.area
     if any(x0 < ax0 or y0 < ay0 or x1 > ax1 or y1 > ay1 for x0, y0, x1, y1 in boxes):
         return False
-    if any(_boxes_meet(box, obstacle) for box in boxes for obstacle in page.obstacles()):
+    if any(overlap(box, obstacle) for box in boxes for obstacle in page.obstacles()):
         return False
     across, up = _ONE_LINE_CLEARANCE_MM
     grown = [(x0 - across, y0 - up, x1 + across, y1 + up) for x0, y0, x1, y1 in boxes]
     kept = shapely.union_all([shapely.box(*box) for box in grown])
     reach = kept.bounds
     for layer in others:
-        if not layer.items or not _boxes_meet(bounds([layer]), reach):
+        if not layer.items or not overlap(bounds([layer]), reach):
             continue
-        for item in layer.items:
-            if _boxes_meet(bounds_of([item]), reach) and kept.intersects(_ink(item)):
-                return False
+        near = [item for item in layer.items if overlap(bounds_of([item]), reach)]
+        if near and any(kept.intersects(shape) for shape in obstacles_of(near)):
+            return False
     return True
-
-
-def _boxes_meet(a: Sequence[float], b: Sequence[float]) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def _ink(item: Primitive) -> shapely.Geometry:
-    """Where ``item`` puts ink on the paper: a line along its points, a filled shape whole, a text its box."""
-    if isinstance(item, Polyline):
-        points = item.points
-        if item.closed and item.fill and len(points) >= 3:
-            return shapely.Polygon(points)
-        if len(points) == 1:
-            return shapely.Point(points[0])
-        return shapely.LineString((*points, points[0]) if item.closed else points)
-    if isinstance(item, Arrow):
-        return shapely.LineString((item.start, item.end))
-    if isinstance(item, Circle):
-        disc = shapely.Point(item.centre).buffer(item.radius)
-        return disc if item.fill else disc.exterior
-    return shapely.box(*text_extent(item))
 
 
 # The panels that are a sheet kind's own drawings, by their names' start: beside them a page may hold drawings of
