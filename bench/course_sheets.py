@@ -49,12 +49,12 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
     usual = sheet_module.LARGER_FORCE_STEPS
     spent = {"search_s": 0.0, "larger": 0}
 
-    def timed_search(parts, *rest):
+    def timed_search(parts, *rest, **options):
         start = time.process_time()
-        chosen = own_search(parts, *rest)
+        chosen, pages = own_search(parts, *rest, **options)
         spent["search_s"] += time.process_time() - start
         spent["larger"] += sum(new is not old for new, old in zip(chosen, parts, strict=True))
-        return chosen
+        return chosen, pages
 
     def every_way(ways, taken):
         return next((tried for tried in map(taken, ways) if tried is not None), None)

@@ -67,11 +67,15 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     from graphplan.render.packing import pack
 
     own = sheet_module.fewest_sheets_cuts
+    own_choice = sheet_module._CutChoice
     calls: list[tuple] = []
 
-    def recorded(cuts, after, chosen, form, *rows_apart):
-        calls.append((cuts, after, chosen, form, rows_apart))
-        return own(cuts, after, chosen, form, *rows_apart)
+    # The run chooses its cuts through the choice that `fewest_sheets_cuts` makes (`course_panels` makes it itself, to
+    # choose again for the order of the load diagrams): each one made is a call's arguments.
+    class Recorded(own_choice):
+        def __init__(self, cuts, after, chosen, form, rows_apart=()):
+            super().__init__(cuts, after, chosen, form, rows_apart)
+            calls.append((cuts, after, chosen, form, (rows_apart,) if rows_apart else ()))
 
     def timed_run(most: int, scratch: Path) -> float:
         calls.clear()
@@ -83,14 +87,14 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
         return time.process_time() - start
 
     usual = force_rows.MOST_CUTS
-    sheet_module.fewest_sheets_cuts = recorded
+    sheet_module._CutChoice = Recorded
     with tempfile.TemporaryDirectory() as scratch_name:
         scratch = Path(scratch_name)
         timed_run(usual, scratch / "warm")  # the modules loaded, as every later run finds them
         runs = {"4": timed_run(usual, scratch / "a"), str(MORE_CUTS): timed_run(MORE_CUTS, scratch / "b"),
                 "all": timed_run(ALL_CUTS, scratch / "c")}
     force_rows.MOST_CUTS = usual
-    sheet_module.fewest_sheets_cuts = own
+    sheet_module._CutChoice = own_choice
     result: dict = {"scene": name, "locale": locale, "sheet": sheet or "scene's", "run_cpu_s": runs}
     if not calls:
         result["force_sheets"] = 0

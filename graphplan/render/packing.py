@@ -499,6 +499,18 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
     return pages
 
 
+def reads_in_order(pages: Sequence[Page]) -> bool:
+    """Whether every drawing read after another kind (:attr:`Panel.reads_after`) stands on the last sheet of that
+    kind or after it: :func:`pack` puts it before only where an earlier sheet alone has room for it, which the
+    choice of the force sheets' cuts may still avoid (:func:`graphplan.render.sheet.fewest_sheets_cuts`)."""
+    last_of_kind: dict[str, int] = {}
+    for k, page in enumerate(pages):
+        for panel, _, _ in page.placed:
+            last_of_kind[_kind(panel)] = k
+    return all(k >= last_of_kind.get(panel.reads_after, -1) for k, page in enumerate(pages)
+               for panel, _, _ in page.placed if panel.reads_after)
+
+
 def _flowed(pages: list[Page], earliest: int, panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> int:
     """``panel``'s items (:attr:`Panel.runs`) placed in order as a draftsman fills sheets: on each sheet from
     ``earliest`` on, beside the drawings already there, as long a run as its room holds, the next run below it

@@ -81,6 +81,7 @@ from .packing import (
     height,
     overlap,
     pack,
+    reads_in_order,
     rooms,
     smallest_drawings,
     width,
@@ -531,7 +532,9 @@ def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequenc
     """The force sheets' parts, each sheet cut the way of its ``cuts`` (:meth:`force_rows.Rows.cuts`, least paper
     first) or its rows apart (``rows_apart``, each sheet's: :func:`_rows_apart`) that packs them, with the drawings
     ``after`` them, on the fewest ``sheet`` s: each in turn takes the first of its ways that saves a sheet on those
-    chosen so far, and last the rows of several sheets apart at once where that saves one.
+    chosen so far, and last the rows of several sheets apart at once where that saves one.  Where a drawing
+    ``after`` them that is read after the force sheets (the load diagrams) then stands before one of them, the first
+    other way (:meth:`_CutChoice.in_order`) that packs as few sheets with it after all of them.
 
     The least paper of a sheet's parts alone does not tell: the engine's
     force sheet of position 2 in Russian took a part with group I and the
@@ -542,72 +545,168 @@ def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequenc
     cut whose drawings' area leaves no room for a sheet fewer
     (:func:`~graphplan.render.packing.area_allows`).
     """
-    ways_of = [[*ways, *([apart] if apart else [])] for ways, apart in itertools.zip_longest(cuts, rows_apart,
-                                                                                              fillvalue=())]
-    # Each sheet's rows apart, by its index among its ways: None where it has none.
-    apart_at = [len(ways) - 1 if len(ways) > len(own) else None for ways, own in zip(ways_of, cuts, strict=True)]
-    picked = [0] * len(cuts)  # the way each sheet takes, by its index among its ways
+    choice = _CutChoice(cuts, after, sheet, form, rows_apart)
+    picked = choice.fewest()
+    if not choice.reads_in_order(picked):
+        picked = next(choice.in_order(picked), picked)
+    return choice.parts_of(picked)
 
-    def parts_of(picks: Sequence[int]) -> list[Panel]:
-        return [part for ways, way in zip(ways_of, picks, strict=True) for part in ways[way]]
 
-    if sheet == "none" or all(len(ways) == 1 for ways in ways_of):
-        return parts_of(picked)
+class _CutChoice:
+    """The ways each force sheet may stand on ``sheet`` s (its ``cuts``, then its rows apart), the drawings ``after``
+    them, and the sheets each choice of ways packs them on (each choice packed once)."""
 
-    def sheets_taken(picks: Sequence[int], fewer_than: float = math.inf) -> float:
-        """The sheets the ways ``picks`` take, with the drawings after them; not packed, infinite, where their area
-        alone leaves no room for fewer than ``fewer_than`` (:func:`~graphplan.render.packing.area_allows`)."""
-        drawings = [*parts_of(picks), *after]
-        if fewer_than < math.inf and not area_allows(drawings, int(fewer_than) - 1, sheet, form):
-            return math.inf
+    def __init__(self, cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequence[Panel], sheet: str, form: str,
+                 rows_apart: Sequence[Sequence[Panel]] = ()) -> None:
+        self.cuts, self.after, self.sheet, self.form = cuts, after, sheet, form
+        self.ways_of = [[*ways, *([apart] if apart else [])]
+                        for ways, apart in itertools.zip_longest(cuts, rows_apart, fillvalue=())]
+        # Each sheet's rows apart, by its index among its ways: None where it has none.
+        self.apart_at = [len(ways) - 1 if len(ways) > len(own) else None
+                         for ways, own in zip(self.ways_of, cuts, strict=True)]
+        self._packed: dict[tuple[int, ...], list[Page] | None] = {}
+
+    def parts_of(self, picks: Sequence[int]) -> list[Panel]:
+        return [part for ways, way in zip(self.ways_of, picks, strict=True) for part in ways[way]]
+
+    def pages(self, picks: Sequence[int], fewer_than: float = math.inf) -> list[Page] | None:
+        """The sheets the ways ``picks`` take, with the drawings after them; None where no sheet holds a drawing,
+        or, not packed, where their area alone leaves no room for fewer than ``fewer_than`` sheets
+        (:func:`~graphplan.render.packing.area_allows`)."""
+        key = tuple(picks)
+        if key in self._packed:
+            return self._packed[key]
+        drawings = [*self.parts_of(picks), *self.after]
+        if fewer_than < math.inf and not area_allows(drawings, int(fewer_than) - 1, self.sheet, self.form):
+            return None
         try:
-            return len(pack(drawings, sheet, form))
+            found = pack(drawings, self.sheet, self.form)
         except SceneError:  # packed with the cut least paper first, the run says why no sheet holds a drawing
-            return math.inf
+            found = None
+        self._packed[key] = found
+        return found
 
-    fewest = sheets_taken(picked)
+    def sheets_taken(self, picks: Sequence[int], fewer_than: float = math.inf) -> float:
+        """How many sheets :meth:`pages` takes; infinite where it gives none."""
+        found = self.pages(picks, fewer_than)
+        return math.inf if found is None else len(found)
 
-    def saving(k: int, way: int) -> None:
-        nonlocal picked, fewest
-        tried = [*picked[:k], way, *picked[k + 1:]]
-        taken = sheets_taken(tried, fewest)
-        if taken < fewest:
-            picked, fewest = tried, taken
+    def reads_in_order(self, picks: Sequence[int]) -> bool:
+        """Whether the drawings after the force sheets that are read after them stand after them all, as ``picks``
+        packs them (:func:`~graphplan.render.packing.reads_in_order`); true where nothing is read after them."""
+        if not any(panel.reads_after for panel in self.after) or self.sheet == "none":
+            return True
+        found = self.pages(picks)
+        return found is None or reads_in_order(found)
 
-    # The cuts into more parts than a sheet's first only once every sheet has tried its others, so that they are
-    # taken only where nothing else saves the sheet: tried in turn with the others, the Stephenson six-bar's sheet
-    # of position 3 stood in seven parts on an A1 where its second cut and position 9's take as few.  Its rows apart
-    # first, the last sheet's first: the rows of the sheet next to the load diagrams after them leave those their
-    # place after the force sheets, where an earlier sheet's took room before the later ones.  Every drawing apart
-    # (a group away from its polygon) last: the offset slider-crank's driving link stood in the middle of its A1, its
-    # polygon under another group's, where its rows apart save the sheet too.
-    for k, ways in enumerate(cuts):
-        for way in range(1, len(ways)):
-            if len(ways[way]) <= len(ways[0]):
-                saving(k, way)
-    for k in reversed(range(len(cuts))):
-        if apart_at[k] is not None:
-            saving(k, apart_at[k])
-    for k, ways in enumerate(cuts):
-        for way in range(1, len(ways)):
-            if len(ways[way]) > len(ways[0]):
-                saving(k, way)
-    # Where no sheet's rows apart save one alone, several may together: the Stephenson six-bar's force sheets on A1
-    # each left room on the other's sheets that only their rows apart could take, on three sheets with either apart
-    # and on two with both.  Every sheet's rows apart at once, then each sheet put back as it was, the first first,
-    # where the set keeps its count without it, so that only the sheets the saving needs stand apart, the later ones
-    # (as the rows apart of one sheet are tried) where either would do.
-    together = [way if at is None else at for way, at in zip(picked, apart_at, strict=True)]
-    changed = [k for k, way in enumerate(together) if way != picked[k]]
-    if len(changed) > 1:
-        taken = sheets_taken(together, fewest)
-        if taken < fewest:
-            for k in changed:
-                tried = [*together[:k], picked[k], *together[k + 1:]]
-                if sheets_taken(tried, taken + 1) <= taken:
-                    together = tried
-            picked = together
-    return parts_of(picked)
+    def fewest(self) -> list[int]:
+        """The way of each sheet, by its index among its ways, that the greedy choice takes: the fewest sheets."""
+        picked = [0] * len(self.cuts)  # the way each sheet takes, by its index among its ways
+        if self.sheet == "none" or all(len(ways) == 1 for ways in self.ways_of):
+            return picked
+        fewest = self.sheets_taken(picked)
+
+        def saving(k: int, way: int) -> None:
+            nonlocal picked, fewest
+            tried = [*picked[:k], way, *picked[k + 1:]]
+            taken = self.sheets_taken(tried, fewest)
+            if taken < fewest:
+                picked, fewest = tried, taken
+
+        # The cuts into more parts than a sheet's first only once every sheet has tried its others, so that they
+        # are taken only where nothing else saves the sheet: tried in turn with the others, the Stephenson six-bar's
+        # sheet of position 3 stood in seven parts on an A1 where its second cut and position 9's take as few.  Its
+        # rows apart first, the last sheet's first: the rows of the sheet next to the load diagrams after them leave
+        # those their place after the force sheets, where an earlier sheet's took room before the later ones.  Every
+        # drawing apart (a group away from its polygon) last: the offset slider-crank's driving link stood in the
+        # middle of its A1, its polygon under another group's, where its rows apart save the sheet too.
+        for k, way in self._preferred(fewer_parts=True):
+            saving(k, way)
+        for k in reversed(range(len(self.cuts))):
+            if self.apart_at[k] is not None:
+                saving(k, self.apart_at[k])
+        for k, way in self._preferred(fewer_parts=False):
+            saving(k, way)
+        # Where no sheet's rows apart save one alone, several may together: the Stephenson six-bar's force sheets on
+        # A1 each left room on the other's sheets that only their rows apart could take, on three sheets with either
+        # apart and on two with both.  Every sheet's rows apart at once, then each sheet put back as it was, the
+        # first first, where the set keeps its count without it, so that only the sheets the saving needs stand
+        # apart, the later ones (as the rows apart of one sheet are tried) where either would do.
+        together = [way if at is None else at for way, at in zip(picked, self.apart_at, strict=True)]
+        changed = [k for k, way in enumerate(together) if way != picked[k]]
+        if len(changed) > 1:
+            taken = self.sheets_taken(together, fewest)
+            if taken < fewest:
+                for k in changed:
+                    tried = [*together[:k], picked[k], *together[k + 1:]]
+                    if self.sheets_taken(tried, taken + 1) <= taken:
+                        together = tried
+                picked = together
+        return picked
+
+    def _preferred(self, fewer_parts: bool) -> Iterator[tuple[int, int]]:
+        """Each sheet's cuts after its first (sheet, way), those into no more parts than its first, or those into
+        more (every drawing apart: a group away from its polygon)."""
+        for k, ways in enumerate(self.cuts):
+            for way in range(1, len(ways)):
+                if (len(ways[way]) <= len(ways[0])) == fewer_parts:
+                    yield k, way
+
+    def _ranked(self, k: int, apart: bool = True) -> list[int]:
+        """Sheet ``k``'s ways as :meth:`fewest` prefers them: its cuts into no more parts than its first (the first
+        first), its rows apart, and (with ``apart``) its cuts into more, every drawing apart."""
+        ways = self.cuts[k]
+        fewer = [way for way in range(len(ways)) if len(ways[way]) <= len(ways[0])]
+        more = [way for way in range(1, len(ways)) if len(ways[way]) > len(ways[0])] if apart else []
+        rows = [] if self.apart_at[k] is None else [self.apart_at[k]]
+        return [*fewer, *rows, *more]
+
+    def drawings_apart(self, picks: Sequence[int]) -> int:
+        """How many force sheets ``picks`` stands with every drawing apart (a group away from its polygon)."""
+        return sum(way < len(self.cuts[k]) and len(self.cuts[k][way]) > len(self.cuts[k][0])
+                   for k, way in enumerate(picks))
+
+    def in_order(self, picked: Sequence[int]) -> Iterator[list[int]]:
+        """Other ways than ``picked`` that pack on as few sheets with the drawings read after the force sheets (the
+        load diagrams) after them all, and stand no more force sheets with every drawing apart: one sheet's way
+        changed, the last sheet's first (the sheets next to the load diagrams leave them their room after the force
+        sheets), each sheet's ways as :meth:`fewest` prefers them; then each other sheet standing otherwise than its
+        first way given the first of its ways, drawings apart left out, that keeps the count and the order.
+
+        The scotch yoke's load diagrams stood on its A2 of position 4's
+        force sheet, its drawings apart, before position 9's, its rows
+        apart, on the last A2: with position 4's rows apart and position 9's
+        drawings apart, they stand after both on as many sheets.  The
+        offset slider-crank's, beside position 3's rows apart, stand there
+        still: after position 10's they would stand only beside its drawings
+        apart, its driving link's polygon under its other group's, which
+        takes a sheet with its drawings apart that the count does not need.
+        One sheet's way changed at a time, and each other sheet's once: each
+        way tried is a packing.
+        """
+        count = self.sheets_taken(picked)
+        if count == math.inf:
+            return
+        most_apart = self.drawings_apart(picked)
+
+        def kept(tried: Sequence[int]) -> bool:
+            return self.sheets_taken(tried, count + 1) <= count and self.reads_in_order(tried)
+
+        seen: set[tuple[int, ...]] = set()
+        for k in reversed(range(len(self.ways_of))):
+            for way in self._ranked(k):
+                tried = [*picked[:k], way, *picked[k + 1:]]
+                if way == picked[k] or not kept(tried):
+                    continue
+                for other in range(len(tried)):
+                    if other == k or tried[other] == 0:
+                        continue
+                    tried = next((back for back in ([*tried[:other], own, *tried[other + 1:]]
+                                                    for own in self._ranked(other, apart=False)
+                                                    if own != tried[other]) if kept(back)), tried)
+                if self.drawings_apart(tried) <= most_apart and tuple(tried) not in seen:
+                    seen.add(tuple(tried))
+                    yield tried
 
 
 # A force sheet whole, the ways it may stand on sheets, its rows apart (:func:`_rows_apart`: none where that is no
@@ -1259,41 +1358,58 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
     if loads and smaller_loads is not None and chosen != "none":
         # Drawn smaller where at their size they would take a sheet of their own beside the force sheets as cut, as
         # they were before any force sheet's rows stood apart: a knee press's load diagram stands beside a whole
-        # force sheet at 120 by 45 mm, not at its usual size beside its rows apart.
-        parts = fewest_sheets_cuts(cuts, loads, chosen, form)
+        # force sheet at 120 by 45 mm, not at its usual size beside its rows apart.  Only the count is asked: the
+        # cuts that save sheets, none chosen again for the order.
+        without_apart = _CutChoice(cuts, loads, chosen, form)
+        parts = without_apart.parts_of(without_apart.fewest())
         if parts:
             loads = _loads_saving_a_sheet(parts, loads, smaller_loads, chosen, form)
-    parts = fewest_sheets_cuts(cuts, loads, chosen, form, [apart for _, _, apart, _ in forces])
+    choice = _CutChoice(cuts, loads, chosen, form, [apart for _, _, apart, _ in forces])
+    picked = choice.fewest()
+    parts = choice.parts_of(picked)
     if larger and chosen != "none":
-        # Only a force sheet that stands whole is drawn larger: one cut into its rows apart saved a sheet.
-        cut_up = {part.continues for part in parts}
-        parts = _larger_where_room(parts, loads, [ways for whole, _, _, ways in forces if whole.name not in cut_up],
-                                   chosen, form)
+        parts, pages = _larger_where_room(parts, loads, _larger_ways(forces, parts), chosen, form,
+                                          packed=choice.pages(picked))
+        if pages is not None and not reads_in_order(pages):
+            parts = _read_after_forces(choice, picked, parts, len(pages), forces, length_scale(analysis))
     return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _, _, _ in forces), tuple(dynamics),
                         tuple(balancing))
 
 
+def _larger_ways(forces: Sequence[_ForceSheetWays], parts: Sequence[Panel]
+                 ) -> list[Callable[[tuple[int, int]], Panel | None]]:
+    """The larger ways of each force sheet that stands whole among ``parts``: one cut into its rows apart saved a
+    sheet."""
+    cut_up = {part.continues for part in parts}
+    return [ways for whole, _, _, ways in forces if whole.name not in cut_up]
+
+
 def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
                        larger: Sequence[Callable[[tuple[int, int]], Panel | None]],
-                       sheet: str, form: str) -> list[Panel]:
+                       sheet: str, form: str, packed: list[Page] | None = None, keep_order: bool = False
+                       ) -> tuple[list[Panel], list[Page] | None]:
     """``parts``, each force sheet that stands whole among them drawn larger (its groups cut free at a finer μl,
     its polygons at a finer μF) where the sheets hold it so: of its ``larger`` ways, the first of
     :data:`LARGER_FORCE_STEPS` (:func:`_first_fitting`) that packs with the drawings ``after`` them on no more
-    sheets, keeps the drawings in order, and puts no two μl on one sheet, whose title block gives one scale.  A
+    sheets, keeps the drawings in order (with ``keep_order``, those read after the force sheets after them too:
+    :func:`~graphplan.render.packing.reads_in_order`), and puts no two μl on one sheet, whose title block gives one
+    scale; with the sheets they pack on (``packed``, where given, those of ``parts``), None where none holds them.  A
     force sheet with room to spare on its A1 drew its groups and polygons a third of the way across it, as small as
     the mechanism's own μl and the polygons' 150 mm fields make them."""
     chosen = list(parts)
 
-    def packed(tried: Sequence[Panel]) -> list[Page] | None:
+    def packing(tried: Sequence[Panel]) -> list[Page] | None:
         try:
             return pack([*tried, *after], sheet, form)
         except SceneError:
             return None
 
-    pages = packed(chosen)
+    pages = packed if packed is not None else packing(chosen)
     if pages is None or not LARGER_FORCE_STEPS:
-        return chosen
+        return chosen, pages
     count = len(pages)
+    # The sheets of the last way taken: the way :func:`_first_fitting` gives.
+    taken_pages: list[list[Page]] = []
     for way_at in larger:
         def taken(steps: tuple[int, int], way_at=way_at, current=chosen) -> list[Panel] | None:
             way = way_at(steps)
@@ -1301,13 +1417,56 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
             if at is None:
                 return None
             tried = [*current[:at], way, *current[at + 1:]]
-            found = packed(tried)
+            found = packing(tried)
             fitting = found is not None and len(found) <= count and \
-                _in_order(found, [part.name for part in tried]) and all(_one_length_scale(page) for page in found)
+                _in_order(found, [part.name for part in tried]) and all(_one_length_scale(page) for page in found) \
+                and (not keep_order or reads_in_order(found))
+            if fitting:
+                taken_pages.append(found)
             return tried if fitting else None
 
-        chosen = _first_fitting(LARGER_FORCE_STEPS, taken) or chosen
-    return chosen
+        taken_pages.clear()
+        larger_way = _first_fitting(LARGER_FORCE_STEPS, taken)
+        if larger_way is not None:
+            chosen, pages = larger_way, taken_pages[-1]
+    return chosen, pages
+
+
+def _read_after_forces(choice: _CutChoice, picked: Sequence[int], parts: Sequence[Panel], count: int,
+                       forces: Sequence[_ForceSheetWays], scale: float) -> list[Panel]:
+    """``parts`` (the force sheets cut as ``picked``, drawn larger where room, on ``count`` sheets, a drawing read
+    after them standing before one), or the first of their other ways (the same cut drawn larger no further than
+    keeps the order, then :meth:`_CutChoice.in_order`) that packs on as few sheets with every drawing read after the
+    force sheets after them all, and draws no group cut free, no polygon and no arrow smaller than ``parts`` do
+    (:func:`_drawn_no_smaller`): the order is not bought with a sheet, nor with a smaller drawing."""
+    for tried in itertools.chain((list(picked),), choice.in_order(picked)):
+        if not choice.reads_in_order(tried):
+            continue
+        cut = choice.parts_of(tried)
+        drawn, pages = _larger_where_room(cut, choice.after, _larger_ways(forces, cut), choice.sheet, choice.form,
+                                          packed=choice.pages(tried), keep_order=True)
+        if pages is not None and len(pages) <= count and reads_in_order(pages) and \
+                _drawn_no_smaller(drawn, parts, scale):
+            return drawn
+    return list(parts)
+
+
+def _drawn_no_smaller(drawn: Sequence[Panel], before: Sequence[Panel], scale: float) -> bool:
+    """Whether ``drawn`` draws every force sheet that ``before`` draws larger than its record at least as large: its
+    groups cut free at no coarser μl (``scale``, the analysis's, where a panel gives none), each polygon at no coarser
+    μF, each group's arrows likewise."""
+    by_name = {panel.name: panel for panel in drawn}
+    for old in before:
+        if not (old.polygon_scales or old.body_arrows):
+            continue
+        new = by_name.get(old.name)
+        if new is None or (new.length_scale or scale) > (old.length_scale or scale) + 1e-12:
+            return False
+        polygons, arrows = dict(new.polygon_scales), {label: at for label, at, _ in new.body_arrows}
+        if any(polygons.get(label, math.inf) > at + 1e-12 for label, at in old.polygon_scales) or \
+                any(arrows.get(label, math.inf) > at + 1e-12 for label, at, _ in old.body_arrows):
+            return False
+    return True
 
 
 def _first_fitting(ways: Sequence[tuple[int, int]], taken: Callable[[tuple[int, int]], list[Panel] | None]
