@@ -11,8 +11,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import accuracy  # noqa: E402
-import stability  # noqa: E402
+import accuracy
+import stability
 
 if __name__ == "__main__":
     accuracy.main()

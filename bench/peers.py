@@ -152,8 +152,8 @@ def reference_fourbar(angles, omega=OMEGA, alpha=EPSILON):
 
     # Coupler points are rigid on link 3: offset from A in the link frame.
     ex = b / COUPLER
-    out = dict(A=A, B=B, vA=vA, vB=vB, aA=aA, aB=aB,
-               omega3=w3, omega4=w4, alpha3=a3, alpha4=a4)
+    out = {"A": A, "B": B, "vA": vA, "vB": vB, "aA": aA, "aB": aB,
+               "omega3": w3, "omega4": w4, "alpha3": a3, "alpha4": a4}
     for name, (along, left) in (("S3", (S3_ALONG, 0.0)), ("E", (S3_ALONG, E_LEFT))):
         rel = along * ex + left * _perp(ex)
         out[name] = A + rel
@@ -402,7 +402,10 @@ MECHANISM_NOTE = (
 )
 
 
-def _rough(values, step=math.radians(5)):
+_ROUGH_STEP = math.radians(5)
+
+
+def _rough(values, step=_ROUGH_STEP):
     """Initial fsolve guess: the branch we want, rounded to 5 degrees so the
     peer still has to converge on its own."""
     return np.round(np.asarray(values, dtype=float) / step) * step
@@ -428,7 +431,7 @@ def _mechanism_fourbar_model(mech, six=None):
     ae = mech.Vector((a_, e_), r=math.hypot(S3_ALONG, E_LEFT))
     se = mech.Vector((s3, e_), r=E_LEFT)
     vectors = [a, b1, b2, g, d, ae, se]
-    named = dict(crank=a, coupler=b1, rocker=d)
+    named = {"crank": a, "coupler": b1, "rocker": d}
     if six:
         ED, DF, F, _ = six
         d_, f_ = joints[6:]
@@ -450,8 +453,8 @@ def _mechanism_fourbar_model(mech, six=None):
 
 def _mechanism_run(mech, joints, vectors, loops, angles, omega, alpha, guess, kinematics):
     n = angles.size
-    kw = dict(vectors=vectors, origin=joints[0], loops=loops, pos=angles,
-              guess=(guess, np.zeros_like(guess), np.zeros_like(guess)))
+    kw = {"vectors": vectors, "origin": joints[0], "loops": loops, "pos": angles,
+              "guess": (guess, np.zeros_like(guess), np.zeros_like(guess))}
     if kinematics:
         # The velocity and acceleration loops are linear in their unknowns,
         # so a zero guess is as good as any.
@@ -502,7 +505,7 @@ def mechanism_fourbar(angles, kinematics=True, omega=OMEGA, alpha=EPSILON, _six=
     names = ["A", "B", "S3", "E"] + (["D"] if _six else [])
     out = _mechanism_joint_arrays(m.joints, names, kinematics)
     if kinematics:
-        links = dict(omega3="coupler", omega4="rocker")
+        links = {"omega3": "coupler", "omega4": "rocker"}
         if _six:
             links.update(omega5="link5", omega6="link6")
         for key, vec in links.items():
@@ -610,10 +613,10 @@ def main():
     # timed at no more than 10**4 positions and reported per position.
     mechanism_cap = 10 ** 4
     linkages = {
-        "fourbar": (OMEGA, reference_fourbar, dict(
-            pylinkage=pylinkage_fourbar, mechanism=mechanism_fourbar)),
-        "sixbar": (OMEGA, reference_sixbar, dict(
-            pylinkage=pylinkage_sixbar, mechanism=mechanism_sixbar)),
+        "fourbar": (OMEGA, reference_fourbar, {
+            "pylinkage": pylinkage_fourbar, "mechanism": mechanism_fourbar}),
+        "sixbar": (OMEGA, reference_sixbar, {
+            "pylinkage": pylinkage_sixbar, "mechanism": mechanism_sixbar}),
     }
     for lname, offset in (("slider", 0.0), ("slider e", SC_OFFSET)):
         geometry = {"crank": SC_CRANK, "rod": SC_ROD, "offset": offset, "s3": SC_S3}
@@ -643,11 +646,11 @@ def main():
     for lname, (omega, reference, peers) in linkages.items():
         for n in sizes:
             angles = sweep(n, omega)
-            t_ref, ref = best_time(lambda: reference(angles), 5)
+            t_ref, ref = best_time(lambda reference=reference, angles=angles: reference(angles), 5)
             _row(lname, "reference (numpy)", "pos+v+a", n, t_ref, {}, None, None)
             runs = [
-                ("pylinkage step_fast", peers["pylinkage"], dict(fast=True), 3),
-                ("pylinkage step", peers["pylinkage"], dict(fast=False), 3),
+                ("pylinkage step_fast", peers["pylinkage"], {"fast": True}, 3),
+                ("pylinkage step", peers["pylinkage"], {"fast": False}, 3),
                 ("mechanism fsolve", peers["mechanism"], {}, 2 if n <= 10 ** 3 else 1),
             ]
             for label, fn, kw, repeats in runs:
@@ -656,7 +659,7 @@ def main():
                           f"N={mechanism_cap} rows for the per-position speed")
                     continue
                 for kin in (False, True):
-                    t, res = best_time(lambda: fn(angles, kinematics=kin, **kw), repeats)
+                    t, res = best_time(lambda fn=fn, angles=angles, kin=kin, kw=kw: fn(angles, kinematics=kin, **kw), repeats)
                     crank_err = res.get("crank_angle_error")
                     own = None
                     if crank_err is not None:

@@ -24,12 +24,13 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
+# The peers' adapters live beside this script.
 sys.path.insert(0, str(HERE))
 
-import peers  # noqa: E402  (the peers' adapters live beside this script)
+import peers
 
-import graphplan  # noqa: E402
-from graphplan.accuracy import best_time  # noqa: E402
+import graphplan
+from graphplan.accuracy import best_time
 
 N = 100_000
 REPEATS = 15
@@ -110,8 +111,8 @@ def write(results: dict) -> None:
     out.mkdir(exist_ok=True)
     (out / "sweep.json").write_text(json.dumps(results, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     lines = ["# Analytic sweep: positions per second", "",
-             f"{results['machine']}; best of {REPEATS} runs after a warm-up; N = {N} crank positions "
-             f"(mechanism: {MECHANISM_N}). Regenerate with `python bench/sweep.py`.", ""]
+             (f"{results['machine']}; best of {REPEATS} runs after a warm-up; N = {N} crank positions "
+              f"(mechanism: {MECHANISM_N}). Regenerate with `python bench/sweep.py`."), ""]
     for name, linkage in results["linkages"].items():
         lines += [f"## {name}", "", "| solver | positions/s | computes | largest difference (pos m, vel m/s, acc m/s²) |",
                   "|---|---:|---|---|"]
@@ -121,8 +122,8 @@ def write(results: dict) -> None:
             text = (f"{diff['pos']:.1e}, {diff['vel']:.1e}, {diff['acc']:.1e} ({against})" if diff else "")
             lines.append(f"| {solver} | {row['positions_per_s']:.3g} | {row['computes']} | {text} |")
         lines += ["", f"graphplan / fastest peer with v and a: **{linkage['ratio_to_fastest_peer_with_v_and_a']:.1f}×**", ""]
-    lines += ["pylinkage steps its crank by adding an increment, so its crank angle drifts from the exact one "
-              "(the `crank_angle_drift_rad` in sweep.json); that drift is most of its difference from graphplan.", ""]
+    lines += [("pylinkage steps its crank by adding an increment, so its crank angle drifts from the exact one "
+               "(the `crank_angle_drift_rad` in sweep.json); that drift is most of its difference from graphplan."), ""]
     (out / "sweep.md").write_text("\n".join(lines), encoding="utf-8")
 
 
