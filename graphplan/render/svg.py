@@ -70,12 +70,14 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
     document = svgwrite.Drawing(size=(f"{_n(width)}mm", f"{_n(height)}mm"), profile="full", debug=False)
     document.viewbox(0, 0, float(_n(width)), float(_n(height)))
     document.add(document.rect(insert=(0, 0), size=(_n(width), _n(height)), fill="white", id="background"))
+    # The elements' attributes are put in their attribs dict at once: their names are written as SVG spells them, and
+    # the document is not validated (debug=False), all svgwrite's update() would do to each, some twenty thousand.
     def polyline(item: Polyline):
         # A path with our own number formatting: svgwrite's polyline formats points itself.
         # Each point written in place, not through xy(): the drawings have some ten thousand.
         path = "M" + " L".join(f"{_n(x - left)},{_n(top - y)}" for x, y in item.points) + (" Z" if item.closed else "")
         element = document.path(d=path)
-        element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
+        element.attribs.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
         return element
 
     def text(item: Text):
@@ -100,7 +102,7 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
         if item.rotation:
             # Counter-clockwise on the paper is clockwise once y points down; about the anchor, not the start.
             attributes["transform"] = f"rotate({_n(-item.rotation)} {x} {y})"
-        element.update(attributes)
+        element.attribs.update(attributes)
         return element
 
     for layer in layers:
@@ -115,11 +117,16 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
             elif isinstance(item, Circle):
                 cx, cy = xy(item.centre)
                 element = document.circle(center=(cx, cy), r=_n(item.radius))
-                element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
+                element.attribs.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
             elif isinstance(item, Text):
                 element = text(item)
             else:  # pragma: no cover - the Primitive union is closed
                 raise TypeError(f"unknown primitive {item!r}")
             group.add(element)
         document.add(group)
-    return document.tostring()
+    # svgwrite's tostring() serializes to UTF-8 bytes through a codec writer, a call for each of the document's
+    # pieces, and decodes them again: ElementTree writes the same text straight to a string (as svgwrite's own note
+    # on tostring() says Python 3 may), with no XML declaration either way.
+    from xml.etree import ElementTree
+
+    return ElementTree.tostring(document.get_xml(), encoding="unicode")
