@@ -20,9 +20,10 @@ from graphplan import deliverables
 from graphplan.analysis import analyse
 from graphplan.render.drawings import with_length_scale
 from graphplan.render.force_rows import HEADING_LAYER
+from graphplan.render.force_sheet_choice import fewest_sheets_cuts
 from graphplan.render.formats import PADDING_MM, page_geometry
 from graphplan.render.packing import GAP_MM, Panel, area_allows, pack
-from graphplan.render.sheet import course_sheets, fewest_sheets_cuts
+from graphplan.render.sheet import course_sheets
 
 # A force sheet of two rows, a group with its polygon over the lever, and the load diagrams after it.
 ROW_MM, LEVER_MM, LOADS_MM = (300.0, 90.0), (150.0, 80.0), (200.0, 90.0)

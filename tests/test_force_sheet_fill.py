@@ -13,6 +13,7 @@ import pytest
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.render import force_sheet_choice
 from graphplan.render import sheet as sheet_module
 from graphplan.render.forces import group_id
 from graphplan.render.primitives import Arrow, Text, bounds_of
@@ -131,7 +132,7 @@ def test_the_larger_force_drawings_stay_in_the_field_apart_from_one_another(slot
 @pytest.mark.parametrize("sheet", ["A1", "A3"])
 def test_drawing_the_force_sheets_larger_takes_no_more_sheets(slotted_lever, sheet, monkeypatch):
     larger = course_sheets(slotted_lever, sheet)
-    monkeypatch.setattr(sheet_module, "LARGER_FORCE_STEPS", ())
+    monkeypatch.setattr(force_sheet_choice, "LARGER_FORCE_STEPS", ())
     sheet_module._laid_out_panels.__init__()  # the force sheets laid out again, with no larger way to take
     usual = course_sheets(slotted_lever, sheet)
     assert len(larger) == len(usual)

@@ -1,4 +1,4 @@
-"""The search for the way a course sheet draws a force sheet larger (`sheet._first_fitting`) finds the way that
+"""The search for the way a course sheet draws a force sheet larger (`force_sheet_choice.first_fitting`) finds the way that
 trying every way in order, largest first, finds, wherever a larger drawing needs more room, and lays out fewer.
 
 Every set of ways that pack which a larger drawing needing more room allows (a way packs only where every way
@@ -9,8 +9,8 @@ import itertools
 
 import pytest
 
-from graphplan.render import sheet as sheet_module
-from graphplan.render.sheet import LARGER_FORCE_STEPS, PROBE_STEPS, _first_fitting
+from graphplan.render import force_sheet_choice
+from graphplan.render.force_sheet_choice import LARGER_FORCE_STEPS, PROBE_STEPS, first_fitting
 
 
 def packing_sets():
@@ -41,7 +41,7 @@ def test_the_search_finds_the_first_way_in_order_that_packs(packing):
         return [way] if way in packing else None
 
     scanned = next(([way] for way in LARGER_FORCE_STEPS if way in packing), None)
-    assert _first_fitting(LARGER_FORCE_STEPS, taken) == scanned
+    assert first_fitting(LARGER_FORCE_STEPS, taken) == scanned
     assert len(tried) == len(set(tried)), "no way laid out twice"
     assert tried[0] == PROBE_STEPS
 
@@ -54,14 +54,14 @@ def test_where_only_the_probe_and_those_under_it_pack_fewer_ways_are_laid_out_th
         tried.append(way)
         return [way] if way in packing else None
 
-    _first_fitting(LARGER_FORCE_STEPS, taken)
+    first_fitting(LARGER_FORCE_STEPS, taken)
     # The probe, then every larger way, largest first, as the search was: seven.
     larger = LARGER_FORCE_STEPS.index(PROBE_STEPS)
     assert len(tried) < 1 + larger
 
 
 def test_a_probe_not_among_the_ways_starts_in_their_middle(monkeypatch):
-    monkeypatch.setattr(sheet_module, "PROBE_STEPS", (9, 9))
+    monkeypatch.setattr(force_sheet_choice, "PROBE_STEPS", (9, 9))
     tried = []
-    _first_fitting(LARGER_FORCE_STEPS, lambda way: tried.append(way))
+    first_fitting(LARGER_FORCE_STEPS, lambda way: tried.append(way))
     assert tried[0] == LARGER_FORCE_STEPS[len(LARGER_FORCE_STEPS) // 2]

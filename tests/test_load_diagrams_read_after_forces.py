@@ -19,9 +19,10 @@ from graphplan import deliverables
 from graphplan.analysis import analyse
 from graphplan.render.drawings import with_length_scale
 from graphplan.render.force_rows import HEADING_LAYER
+from graphplan.render.force_sheet_choice import fewest_sheets_cuts
 from graphplan.render.formats import PADDING_MM, page_geometry
 from graphplan.render.packing import GAP_MM, Panel, area_allows, pack
-from graphplan.render.sheet import course_sheets, fewest_sheets_cuts
+from graphplan.render.sheet import course_sheets
 from graphplan.render.title_block import form_of
 
 # Each force sheet's two rows, the width of each such that two stand side by side in the area, but a force sheet

@@ -106,7 +106,7 @@ class Panel:
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
     heading_scales: tuple[tuple[str, str], ...] = ()
     heading_comma: str = ", "  # what sets those scales apart (:attr:`force_rows.Heading.comma`)
-    # A force sheet drawn larger for a course sheet with room (:func:`sheet._larger_where_room`): the μF of each of its
+    # A force sheet drawn larger for a course sheet with room (:func:`force_sheet_choice.larger_where_room`): the μF of each of its
     # polygons drawn at another than the record's, by its group's label, for the check of readings measured on it.
     polygon_scales: tuple[tuple[str, float], ...] = ()
     # Of the same, the μF each group cut free (drawn larger too, or as the record) draws its arrows at, by its label,
