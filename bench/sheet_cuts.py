@@ -11,9 +11,11 @@ sheet (and each `--sheet` given), a fresh interpreter runs `graphplan run` (`run
 with `MOST_CUTS = 8` and with every cut (`MOST_CUTS` patched), after an untimed run that loads the modules.  The
 last run's call of `fewest_sheets_cuts` (its cuts, the load diagrams packed after them) is then answered again by
 the package's own functions: greedy over the first 4, the first 8 and all the cuts (the same function, each
-sheet's cuts cut short), and every combination of the cuts packed in turn (`render/packing.pack`), stopped after
-`--budget` processor seconds (the search then says how far it came).  Every figure counts the sheets that
-`pack` lays the chosen parts on, as the run's sheet_N.svg of forces are packed.
+sheet's cuts cut short), and every combination of each sheet's ways, its cuts and its rows apart, packed in turn
+(`force_sheet_choice.CutChoice.pages`), stopped after `--budget` processor seconds (the search then says how far it
+came): the fewest sheets of all, and the fewest of those that keep the load diagrams after every force sheet
+(`packing.reads_in_order`).  Every figure counts the sheets that `pack` lays the chosen parts on, as the run's
+sheet_N.svg of forces are packed, before any force sheet is drawn larger.
 
 Times are processor times (the machine is shared): each run's own, and each choice's as a fraction of the run
 as it is.  Results go to bench/results/sheet_cuts.json and sheet_cuts.md.
@@ -64,13 +66,13 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     from graphplan.errors import SceneError
     from graphplan.render import force_rows
     from graphplan.render import sheet as sheet_module
-    from graphplan.render.packing import pack
+    from graphplan.render.packing import pack, reads_in_order
 
     own = sheet_module.fewest_sheets_cuts
-    own_choice = sheet_module._CutChoice
+    own_choice = sheet_module.CutChoice
     calls: list[tuple] = []
 
-    # The run chooses its cuts through the choice that `fewest_sheets_cuts` makes (`course_panels` makes it itself, to
+    # The run chooses its cuts through the choice (`force_sheet_choice.CutChoice`) that `fewest_sheets_cuts` makes (`course_panels` makes it itself, to
     # choose again for the order of the load diagrams): each one made is a call's arguments.
     class Recorded(own_choice):
         def __init__(self, cuts, after, chosen, form, rows_apart=()):
@@ -87,29 +89,34 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
         return time.process_time() - start
 
     usual = force_rows.MOST_CUTS
-    sheet_module._CutChoice = Recorded
+    sheet_module.CutChoice = Recorded
     with tempfile.TemporaryDirectory() as scratch_name:
         scratch = Path(scratch_name)
         timed_run(usual, scratch / "warm")  # the modules loaded, as every later run finds them
         runs = {"4": timed_run(usual, scratch / "a"), str(MORE_CUTS): timed_run(MORE_CUTS, scratch / "b"),
                 "all": timed_run(ALL_CUTS, scratch / "c")}
     force_rows.MOST_CUTS = usual
-    sheet_module._CutChoice = own_choice
+    sheet_module.CutChoice = own_choice
     result: dict = {"scene": name, "locale": locale, "sheet": sheet or "scene's", "run_cpu_s": runs}
     if not calls:
         result["force_sheets"] = 0
         return result
     # The run's own: the μl choice's calls come before it.  Each sheet's rows apart are given to the greedy choice
-    # as the run gives them; the combinations below are of the cuts alone.
+    # as the run gives them, and are among each sheet's ways in the combinations below.
     cuts, after, chosen, form, rows_apart = calls[-1]
-    result.update(force_sheets=len(cuts), ways=[len(ways) for ways in cuts], sheet=chosen)
+    every = own_choice(cuts, after, chosen, form, *rows_apart)
+    result.update(force_sheets=len(cuts), cuts=[len(ways) for ways in cuts], ways=[len(ways) for ways in every.ways_of],
+                  sheet=chosen)
+    read_after = any(panel.reads_after for panel in after)
 
-    def sheets_taken(parts) -> float:
-        """The sheets the parts (a flat list) take with the drawings after them."""
+    def taken(parts) -> tuple[float, bool]:
+        """The sheets the parts (a flat list) take with the drawings after them, and whether those read after the
+        force sheets stand after them all."""
         try:
-            return len(pack([*parts, *after], chosen, form))
+            pages = pack([*parts, *after], chosen, form)
         except SceneError:
-            return math.inf
+            return math.inf, True
+        return len(pages), not read_after or reads_in_order(pages)
 
     base = runs["4"]
     choices = {}
@@ -117,23 +124,27 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
         start = time.process_time()
         parts = own([ways[:most] for ways in cuts], after, chosen, form, *rows_apart)
         used = time.process_time() - start
-        choices[label] = {"sheets": sheets_taken(parts), "cpu_s": used, "of_run": used / base}
-    # Every combination of the cuts, those of the sheets with one way fixed, until the budget is spent.
-    varied = [k for k, ways in enumerate(cuts) if len(ways) > 1]
-    total = math.prod(len(cuts[k]) for k in varied)
+        sheets, in_order = taken(parts)
+        choices[label] = {"sheets": sheets, "in_order": in_order, "cpu_s": used, "of_run": used / base}
+    # Every combination of the ways, those of the sheets with one way fixed, until the budget is spent.
+    varied = [k for k, ways in enumerate(every.ways_of) if len(ways) > 1]
+    total = math.prod(len(every.ways_of[k]) for k in varied)
     start = time.process_time()
-    best, tried = math.inf, 0
-    for combination in itertools.product(*(range(len(cuts[k])) for k in varied)):
+    best, best_in_order, tried = math.inf, math.inf, 0
+    for combination in itertools.product(*(range(len(every.ways_of[k])) for k in varied)):
         if time.process_time() - start > budget:
             break
-        picked = [ways[0] for ways in cuts]
+        picks = [0] * len(cuts)
         for k, index in zip(varied, combination, strict=True):
-            picked[k] = cuts[k][index]
-        best = min(best, sheets_taken([part for parts in picked for part in parts]))
+            picks[k] = index
+        sheets = every.sheets_taken(picks)
+        best = min(best, sheets)
+        if not read_after or every.reads_in_order(picks):
+            best_in_order = min(best_in_order, sheets)
         tried += 1
     used = time.process_time() - start
-    choices["exhaustive"] = {"sheets": best, "cpu_s": used, "of_run": used / base, "combinations": total,
-                             "tried": tried, "complete": tried == total}
+    choices["exhaustive"] = {"sheets": best, "in_order_sheets": best_in_order, "cpu_s": used, "of_run": used / base,
+                             "combinations": total, "tried": tried, "complete": tried == total}
     result["choices"] = choices
     result["run_sheets"] = choices["greedy/4"]["sheets"]
     return result
@@ -162,9 +173,15 @@ def refused(row: dict, columns: int) -> str:
             f"{said.split(': ', 2)[-1].split(' (')[0][:100]} |" + " |" * columns)
 
 
+def _sheets_cell(choice: dict) -> str:
+    """A greedy choice's sheets, marked † where the load diagrams stand before a force sheet."""
+    return f"{choice['sheets']}{'' if choice['in_order'] else '†'}"
+
+
 def table(rows: list[dict]) -> str:
-    lines = [("| scene | locale | sheet | force sheets (ways each) | greedy/4 | greedy/8 | greedy/all | exhaustive "
-              "(tried of all) | run s (4 / 8 / all cuts) | choice's time of the run: greedy/4, /8, /all, exhaustive |"),
+    lines = [("| scene | locale | sheet | force sheets (ways each: cuts and rows apart) | greedy/4 | greedy/8 | greedy/all | exhaustive, "
+              "in order (tried of all) | run s (4 / 8 / all cuts) | choice's time of the run: greedy/4, /8, /all, "
+              "exhaustive |"),
              "|---|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
         if "error" in row:
@@ -179,9 +196,9 @@ def table(rows: list[dict]) -> str:
         ex = c["exhaustive"]
         shares = ", ".join(f"{100 * c[key]['of_run']:.2g} %" for key in ("greedy/4", f"greedy/{MORE_CUTS}",
                                                                            "greedy/all", "exhaustive"))
+        greedy = " | ".join(_sheets_cell(c[key]) for key in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all"))
         lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | {row['force_sheets']} "
-                     f"({' '.join(map(str, row['ways']))}) | {c['greedy/4']['sheets']} | "
-                     f"{c[f'greedy/{MORE_CUTS}']['sheets']} | {c['greedy/all']['sheets']} | {ex['sheets']} "
+                     f"({' '.join(map(str, row['ways']))}) | {greedy} | {ex['sheets']}, {ex['in_order_sheets']} "
                      f"({ex['tried']} of {ex['combinations']}) | {timing} | {shares} |")
     return "\n".join(lines)
 
@@ -216,8 +233,13 @@ def summarised(rows: list[dict], budget: float) -> None:
     worse = {label: sum(row["choices"][label]["sheets"] > row["choices"]["exhaustive"]["sheets"] for row in drawn)
              for label in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all")}
     incomplete = [row for row in drawn if not row["choices"]["exhaustive"]["complete"]]
-    most_ways = max((ways for row in drawn for ways in row["ways"]), default=0)
-    past = {most: sum(ways > most for row in drawn for ways in row["ways"]) for most in (4, MORE_CUTS)}
+    # Runs whose choice leaves the load diagrams before a force sheet: of them, those where some combination keeps
+    # them after all on as few sheets.
+    out_of_order = [row for row in drawn if not row["choices"]["greedy/4"]["in_order"]]
+    order_left = [row for row in out_of_order
+                  if row["choices"]["exhaustive"]["in_order_sheets"] <= row["choices"]["greedy/4"]["sheets"]]
+    most_ways = max((ways for row in drawn for ways in row["cuts"]), default=0)
+    past = {most: sum(ways > most for row in drawn for ways in row["cuts"]) for most in (4, MORE_CUTS)}
     shares = {label: max((row["choices"][label]["of_run"] for row in drawn), default=0.0)
               for label in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all", "exhaustive")}
     run_ratios = {key: statistics.median(row["run_cpu_s"][key] / row["run_cpu_s"]["4"] for row in drawn)
@@ -225,23 +247,29 @@ def summarised(rows: list[dict], budget: float) -> None:
     result = {"budget_s": budget, "rows": rows, "with_force_sheets": len(drawn), "with_a_choice": len(chosen),
               "refused": len(refused), "worse_than_exhaustive": worse, "exhaustive_incomplete": len(incomplete),
               "most_cuts_of_a_sheet": most_ways, "sheets_past": past, "most_share_of_run": shares,
-              "median_run_ratio_to_4": run_ratios}
+              "median_run_ratio_to_4": run_ratios, "out_of_order": len(out_of_order),
+              "in_order_at_the_same_count": len(order_left)}
     markdown = (
         "# The cuts of force sheets: greedy over 4 cuts against more cuts and every combination\n\n"
         f"{len(rows)} runs (every fixture and starter in en, ru, zh, on each sheet measured), {len(drawn)} with "
-        f"force sheets, {len(chosen)} of them with a force sheet cut more than one way, {len(refused)} refused (the "
+        f"force sheets, {len(chosen)} of them with a force sheet that may stand more than one way, {len(refused)} refused (the "
         f"scene's μl or a drawing no such sheet holds). A force sheet had at most **{most_ways}** cuts; "
         f"{past[4]} force sheets had more than 4, {past[MORE_CUTS]} more than {MORE_CUTS}. Sheets taken beyond "
         "the best that every combination of the cuts gives: "
         + ", ".join(f"{label} in **{count}** runs" for label, count in worse.items())
         + f"; the exhaustive search stopped at its budget ({budget:g} processor s) in {len(incomplete)} runs "
-        "(its row says how many combinations it tried of how many).\n\n"
+        "(its row says how many combinations it tried of how many). "
+        f"The run's choice leaves the load diagrams before a force sheet (†) in {len(out_of_order)} runs; in "
+        f"{len(order_left)} of them some combination keeps them after every force sheet on as many sheets (the "
+        "choice refuses those that stand more force sheets with every drawing apart, a group away from its "
+        "polygon, than the count needs).\n\n"
         "Processor time, the most any run's choice took as a share of the run with 4 cuts: "
         + ", ".join(f"{label} {100 * share:.2g} %" for label, share in shares.items())
         + "; the whole run with 8 and with every cut, median of its ratio to the run with 4: "
         + ", ".join(f"{key} {ratio:.3f}" for key, ratio in run_ratios.items()) + ".\n\n"
         + table(rows) + "\n\n"
-        "Sheets: the force sheets' (with the load diagrams) as `render/packing.pack` lays them. Run s: the processor "
+        "Sheets: the force sheets' (with the load diagrams) as `render/packing.pack` lays them; the exhaustive search's "
+        "fewest, then its fewest with the load diagrams after every force sheet. Run s: the processor "
         "seconds of `run.run` with `force_rows.MOST_CUTS` 4, 8 and every cut; a choice's time: the processor time "
         "of choosing (and packing) alone, as a share of the run with 4.\n"
         "Regenerate with `python bench/sheet_cuts.py --sheet A3 --sheet A4 --budget 20`.\n")
