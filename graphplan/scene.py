@@ -606,6 +606,14 @@ def _toml_hint(data: str, message: str) -> str:
         written = (line[:column - 1] + line[column:]).split("#")[0].strip()
         return f"; {code} is a degree sign: an angle is a number, in degrees, so drop it: write {written}"
     if letter in _DASHES:
+        key = _dashed_key(line, column)
+        if key is not None:
+            # A frame line's name as the notes print it (x–x): told to type a hyphen, the student renamed the line
+            # and then had every guide that names it refused.
+            start, end = key
+            return (f"; {described(letter)} in the key {line[start:end]}: a bare TOML key takes ASCII letters, "
+                    f"digits, '-' and '_' alone, so quote the name to keep it as typed: write "
+                    f"{line[:start].lstrip()}\"{line[start:end]}\"{line[end:].rstrip()}")
         return (f"; {described(letter)} is a typographic sign (as the notes print a minus), which TOML does not "
                 "read: type the ASCII '-'")
     if letter != " " and unicodedata.category(letter or "x") == "Zs" and letter not in _IDEOGRAPHIC:
@@ -713,6 +721,26 @@ def _key_hint(line: str, column: int) -> str:
         return f"; a table's name is an English word, not {word!r}: the tables are {', '.join(_TABLES)}"
     return (f"; a key is an English word, not {word!r}: quote a name of your own in other letters "
             f'("{word}" = …)')
+
+
+def _dashed_key(line: str, column: int) -> tuple[int, int] | None:
+    """Where the name round the dash at ``column`` begins and ends when it stands in a key (``x–x = { … }``,
+    ``[frame.lines.x–x]``); None where the dash is a value's sign (``omega = −17.0``, ``[0.0, −0.1]``)."""
+    def in_name(character: str) -> bool:
+        return character in _DASHES or _in_key(character)
+
+    start = end = column - 1
+    while start > 0 and in_name(line[start - 1]):
+        start -= 1
+    while end < len(line) and in_name(line[end]):
+        end += 1
+    before, after = line[:start].rstrip(), line[end:].lstrip()
+    header = line.lstrip().startswith("[")
+    if not any(character.isalpha() for character in line[start:end]) or (before and before[-1] not in "{,.["):
+        return None
+    if after.startswith(("=", ".")) or (header and after.startswith("]")):
+        return start, end
+    return None
 
 
 def _in_key(character: str) -> bool:

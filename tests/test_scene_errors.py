@@ -17,6 +17,7 @@ import codecs
 import copy
 import json
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -1118,6 +1119,28 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
 def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
     stage, error = first_error(text)
     assert stage == "load" and str(error).startswith("<scene>: is not valid TOML: ") and str(error).endswith(hint)
+
+
+@pytest.mark.parametrize("guide_line", [
+    "lines = { x–x = { through = [0.0, 0.08], angle = 0.0 } }",
+    "[frame.lines.x–x]",
+], ids=["inline-table", "table-header"])
+def test_a_dash_in_a_frame_line_s_name_is_told_to_quote_the_key_not_to_type_a_hyphen(guide_line: str) -> None:
+    """A frame line named as the notes print it, x–x, typed as a bare key: TOML reads no en dash there, and the hint
+    had said to type an ASCII '-', which renames the line, so that the guide naming it is refused in turn."""
+    line = guide_line if guide_line.startswith("lines") else f"{guide_line}\nthrough = [0.0, 0.08]\nangle = 0.0"
+    text = (FIXTURE.parent / "offset_slider_crank.toml").read_text(encoding="utf-8")
+    text = text.replace('guide    = "saw"', 'guide    = "x–x"')
+    text = re.sub(r"lines  = \{ saw = .*\n", line + "\n" if line.startswith("lines") else "", text)
+    text += "" if line.startswith("lines") else "\n" + line + "\n"
+    stage, error = first_error(text)
+    assert stage == "load" and "an en dash '–' (U+2013) in the key x–x" in str(error), error
+    assert "type the ASCII '-'" not in str(error)
+    # The line the hint writes, put in place of the one TOML stumbled on, loads the line under its own name.
+    written = str(error).split(": write ", 1)[1]
+    assert written == guide_line.replace("x–x", '"x–x"')
+    scene = scene_module.loads(text.replace(guide_line, written))
+    assert np.allclose(graphplan.solve(scene).point("B").r[:, 1], 0.08)  # B runs along x–x, 80 mm above O
 
 
 @pytest.mark.parametrize(("changes", "message"), [
