@@ -103,6 +103,19 @@ def test_the_chinese_dynamics_writes_the_change_of_kinetic_energy_as_its_drawing
     assert "ΔT" not in note
 
 
+def test_the_chinese_note_names_the_coefficient_delta_as_its_flywheel_is_worked_out(chinese_shaper):
+    """δ, the coefficient the flywheel is sized for, is 速度不均匀系数 where the dynamics works the flywheel out and in
+    the textbooks; the conclusion had named it 速度波动系数, another quantity's name to a reader of both."""
+    note = chinese_shaper["note.md"]
+    zh = strings("zh")
+    ends = re.search(rf"^## \d+ {zh['note_conclusion']}$", note, re.MULTILINE)
+    dynamics, conclusion = note[note.index(f" {zh['note_dynamics']}\n"):ends.start()], note[ends.start():]
+    worked = re.search(r"(速度\w{1,4}系数) δ = ", dynamics)
+    assert worked and worked.group(1) == "速度不均匀系数"
+    named = re.findall(r"速度\w{1,4}?系数", conclusion)
+    assert named and set(named) == {worked.group(1)}, named
+
+
 def test_the_chinese_note_sets_the_balancing_load_s_symbol_apart_from_its_name(chinese_shaper):
     note = chinese_shaper["note.md"]
     assert "四种方法求得的平衡力矩 Mb" in note and "各位置的平衡力矩 Mb" in note
