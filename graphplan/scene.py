@@ -1086,8 +1086,25 @@ def _refuse_beside_a_spring(table: Table, kind: str) -> None:
                              f"spring given its {other} needs its {key} too)")
 
 
+# The ways on the drawing a student names a ram's stroke by (a press's ram moves down), and the angle of a guide
+# that runs that way; in the scene's languages too.
+_WAYS_ON_THE_DRAWING = {"right": 0, "up": 90, "left": 180, "down": -90,
+                        "вправо": 0, "вверх": 90, "влево": 180, "вниз": -90,
+                        "右": 0, "向右": 0, "上": 90, "向上": 90, "左": 180, "向左": 180, "下": -90, "向下": -90}
+
+
 def _read_working(table: Table) -> Working:
     """A stroke: which link's motion, and its sense that is the working stroke."""
+    typed = table.data.get("sense")
+    way = _WAYS_ON_THE_DRAWING.get(typed.strip().lower()) if isinstance(typed, str) else None
+    if way is not None:
+        # Told only the four senses, a student took forward for the ram's working way down, on a guide at 90° that
+        # runs up, and got the strokes the other way round without a word.
+        raise SceneError(table.where("sense"), f"must be one of {', '.join(SENSES)}", typed,
+                         hint=f"; a slider's sense is along its guide: forward the way the guide's angle points, "
+                              f"backward against it, so {typed.strip()} is forward along a guide at angle = {way} "
+                              f"and backward along one at angle = {way - 180 if way > 0 else way + 180} (a turning "
+                              "link's sense is ccw or cw)")
     working = Working(link=table.integer("link", minimum=1), sense=table.choice("sense", SENSES), where=table.path)
     table.done()
     return working

@@ -801,7 +801,9 @@ CASES: list[Case] = [
          "is required but missing: ccw or cw for a turning link, forward or backward (along its guide) for a sliding "
          "one: its motion in the stroke"),
     Case("positions-working-sense-unknown", {"positions.working.sense": "up"}, "positions.working.sense",
-         "must be one of ccw, cw, forward, backward (got 'up')"),
+         "must be one of ccw, cw, forward, backward (got 'up'); a slider's sense is along its guide: forward the way "
+         "the guide's angle points, backward against it, so up is forward along a guide at angle = 90 and backward "
+         "along one at angle = -90 (a turning link's sense is ccw or cw)"),
     Case("positions-working-sense-near-miss", {"positions.working.sense": "cww"}, "positions.working.sense",
          "must be one of ccw, cw, forward, backward; did you mean 'cw'? (got 'cww')"),
     Case("positions-working-unknown-key", {"positions.working.sens": "cw"}, "positions.working.sens",
@@ -1141,6 +1143,26 @@ def test_a_dash_in_a_frame_line_s_name_is_told_to_quote_the_key_not_to_type_a_hy
     assert written == guide_line.replace("x–x", '"x–x"')
     scene = scene_module.loads(text.replace(guide_line, written))
     assert np.allclose(graphplan.solve(scene).point("B").r[:, 1], 0.08)  # B runs along x–x, 80 mm above O
+
+
+@pytest.mark.parametrize("way", ["up", "down", "向下"])
+def test_a_working_sense_typed_as_a_way_on_the_drawing_is_told_which_sense_runs_that_way(way: str) -> None:
+    """A press's ram works moving down: told only the four senses, a student took forward for down on a guide at
+    90°, which runs up, and had the strokes the other way round without a word. The hint's sense for the guide's
+    angle is the one whose working stroke moves the link that way."""
+    text = (FIXTURE.parent / "scotch_yoke.toml").read_text(encoding="utf-8")
+    guide_angle = re.search(r'guide  = \{ through = \[0\.0, 0\.0\], angle = (\S+) \}', text)[1]
+    typed = text.replace('sense = "forward"', f'sense = "{way}"')
+    stage, error = first_error(typed)
+    assert stage == "load" and error.where == "positions.working.sense"
+    told = re.findall(r"(forward|backward) along (?:a guide|one) at angle = (-?\d+)", str(error))
+    sense = next(sense for sense, angle in told if float(angle) == float(guide_angle))
+    analysis = scene_module.loads(typed.replace(f'sense = "{way}"', f'sense = "{sense}"')).analyse()
+    working = np.array(analysis.positions.strokes) == "working"
+    upward = analysis.motion.point("B").v[:, 1]
+    moving = np.abs(upward) > 1e-9
+    assert working.any() and moving[working].any()
+    assert np.all(np.sign(upward[working & moving]) == (1 if way == "up" else -1))
 
 
 @pytest.mark.parametrize(("changes", "message"), [
