@@ -295,7 +295,9 @@ def test_a_chinese_figure_finds_its_cjk_font():
 
 def test_a_chinese_force_sheet_sets_its_scales_off_with_the_full_width_comma():
     """«μl = 0.004 m/mm, 力：μF = 100 N/mm，最短 10 mm» mixed a Latin comma with Chinese ones and left «最短» unclear (a
-    Chinese student's reading): the scales are set off by 「，」, the least arrow said to be the arrows'."""
+    Chinese student's reading): the scales are set off by 「，」, the least arrow said to be the arrows'.  «（不短于 10 mm）»
+    then said neither what is not shorter nor that shorter arrows are drawn longer, so a 10 mm Fu5 read as 1000 N at
+    μF = 100 N/mm: the caption says arrows shorter than 10 mm are drawn at 10 mm, as the Russian one does."""
     from graphplan.render import forces as force_layout
     from graphplan.render.drawings import force_sheet, with_length_scale
 
@@ -305,7 +307,7 @@ def test_a_chinese_force_sheet_sets_its_scales_off_with_the_full_width_comma():
     # A caption's lines joined as they read, a line broken after 「，」 or before 「（」 with nothing lost.
     captions = "".join(item.text for layer in layers if layer.name.endswith("-caption")
                        for item in layer.items if isinstance(item, Text))
-    assert "μl = 0.0025 m/mm，力箭头的比例尺 μF = 100 N/mm（不短于 10 mm）" in captions
+    assert "μl = 0.0025 m/mm，力箭头的比例尺 μF = 100 N/mm（短于 10 mm 的箭头画成 10 mm）" in captions
     assert "m/mm, " not in captions and "最短" not in captions
 
 

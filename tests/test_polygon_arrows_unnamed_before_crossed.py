@@ -245,7 +245,7 @@ def test_the_caption_is_read_as_written():
     assert told_apart("R23τ from the head of R23n", text) == ("R23τ", ("from", "R23n"))
     assert told_apart("R23 = R23n + R23τ", text) == ("R23", ("sum", "R23n", "R23τ"))
     # Chinese names the side first.
-    assert told_apart("R23n 末端起的 R23τ", strings("zh")) == ("R23τ", ("from", "R23n"))
+    assert told_apart("自 R23n 末端画起的 R23τ", strings("zh")) == ("R23τ", ("from", "R23n"))
 
 
 # The whole reactions' names that still read as naming another arrow, the placer finding them no spot where they read
