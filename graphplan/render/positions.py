@@ -169,8 +169,12 @@ def layout(plan: PositionsPlan) -> list[Layer]:
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
     labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, number_leaders, numbers,
                                                   _crowded_pins(plan, paper))
-    # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number).
-    every = broken_under(every, breaking + swing_texts, _breakable(every))
+    # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number),
+    # and so does a position's number round the crank's circle, set clear of the bold lines alone: the Scotch yoke's
+    # 10 and 4 stood struck through by the ends of its slot at those positions.
+    every = broken_under(every, breaking + swing_texts + numbers, _breakable(every))
+    # A point's path too: the crank-rocker's 5 stood on the dashed path of B.
+    paths = broken_under(paths, numbers, _breakable(paths))
     # Under the bold links and the frame: the pins they draw stand over the ends of the springs and cylinders.
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)),
               *([Layer("load-links", tuple(loaded))] if loaded else []), Layer("extremes", tuple(bold)),
