@@ -51,6 +51,7 @@ from ..scales import format_scale, standard_scale
 from ..scene import Scene
 from ..wording import driver_at, raised
 from . import forces as force_report
+from . import given_data
 from .force_note import forces_section, reproducing, worked_product
 from .machine_note import balancing_section, dynamics_section, vibration_section
 from .markdown import literal, set_close, user_texts
@@ -627,7 +628,21 @@ class _Note:
         elif self.analysis.positions.working_link_turns:
             self.para(self.t("note_turns_round", link=scene.positions.working.link,
                              turns=Count(abs(self.analysis.positions.working_link_turns))))
+        self.given_data()
         self.scene_warnings()
+
+    def given_data(self) -> None:
+        """The rest of the assignment, which a course project's note states whole under its initial data: the
+        links' masses and moments of inertia, then the loads, friction and the dynamics' data, each table only where
+        the scene gives any of it."""
+        masses = given_data.mass_rows(self)
+        if masses:
+            self.table(self.t("note_data_masses_caption"), given_data.mass_header(self), masses, "rrlr",
+                       lead="note_data_masses_lead")
+        rows = given_data.data_rows(self)
+        if rows:
+            self.table(given_data.data_caption(self), given_data.data_header(self), rows, "lll",
+                       lead="note_data_lead")
 
     def travel_words(self, travel) -> str:
         """``the rocker's swing ψ = 67.6°``, ``the stroke H = 0.3 m``: a travel the plan of positions dimensions, named
