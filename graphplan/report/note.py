@@ -638,11 +638,11 @@ class _Note:
         masses = given_data.mass_rows(self)
         if masses:
             self.table(self.t("note_data_masses_caption"), given_data.mass_header(self), masses, "rrlr",
-                       lead="note_data_masses_lead")
+                       lead="note_data_masses_table_lead")
         rows = given_data.data_rows(self)
         if rows:
             self.table(given_data.data_caption(self), given_data.data_header(self), rows, "lll",
-                       lead="note_data_lead")
+                       lead="note_data_table_lead")
 
     def travel_words(self, travel) -> str:
         """``the rocker's swing ψ = 67.6°``, ``the stroke H = 0.3 m``: a travel the plan of positions dimensions, named
