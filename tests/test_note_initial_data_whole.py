@@ -9,6 +9,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from scene_texts import engine
 
 from graphplan.cli import main
 
@@ -24,7 +25,7 @@ def _note(tmp_path: Path, scene: Path, locale: str) -> str:
 
 def _section(note: str, number: int) -> str:
     """The text of section ``number``, from its heading to the next of its level."""
-    found = re.search(rf"^## {number}\.? .*?(?=^## )", note, re.S | re.M)
+    found = re.search(rf"^## {number}\.? .*?(?=^## )", note, re.DOTALL | re.MULTILINE)
     assert found, f"no section {number}"
     return found[0]
 
@@ -111,3 +112,20 @@ def test_a_scene_without_masses_or_loads_gives_no_table_of_them(tmp_path, capsys
     # The dimensions' table alone: one caption, and no row of a mass, a load or g.
     assert len(re.findall(r"(?m)^Table \d+\.", data)) == 1, data
     assert "kg" not in data and "| g |" not in data
+
+
+def test_a_load_of_its_own_stroke_is_told_along_that_stroke_not_the_working_one(tmp_path, capsys):
+    """The engine's gas force on the piston's compression stroke is given along that stroke, which is not the
+    working (expansion) stroke: its window must not read as a share of the working stroke."""
+    scene = tmp_path / "engine.toml"
+    scene.write_text(engine() + '[positions]\ncount = 12\nworking = { link = 4, sense = "backward" }\nplans = [2]\n',
+                     encoding="utf-8")
+    given = tomllib.loads(scene.read_text(encoding="utf-8"))["loads"]
+    rows = {row[1]: row[2] for row in _cells(_section(_note(tmp_path, scene, "en"), 2)) if len(row) == 3}
+    capsys.readouterr()
+    for k, load in enumerate(given, start=1):
+        told = rows[f"F4.{k}"]
+        if load["stroke"]["sense"] == "backward":  # the working stroke's own sense
+            assert "of the working stroke" in told, told
+        else:
+            assert "working stroke" not in told and f"link 4 moves {load['stroke']['sense']}" in told, told

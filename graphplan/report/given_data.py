@@ -104,18 +104,28 @@ def _load_value(note: DataWriter, load: LoadSpec) -> str:
 
 def _when(note: DataWriter, load: LoadSpec) -> str:
     """When the load acts: always, over a stroke, over a window of the working stroke, or by its diagram over the
-    shares it spans; of another link's strokes (a second piston's) where the scene says so."""
-    if load.diagram:
-        when = note.t("note_data_diagram", start=note.n(load.diagram[0][0]), end=note.n(load.diagram[-1][0]))
-    elif isinstance(load.during, str):
-        when = note.text[f"note_data_{load.during}"]
+    shares it spans; of its own stroke (a second piston's, the gas's on each stroke of one piston) where the scene
+    gives one other than the working link's working stroke, which its shares are then counted along."""
+    working, own = note.scene.positions.working, load.stroke
+    if own is not None and (working is None or (own.link, own.sense) != (working.link, working.sense)):
+        sense = own.sense if load.during != "idle" else _OPPOSITE[own.sense]
+        stroke = {"link": own.link, "sense": note.text[f"note_data_sense_{sense}"]}
+        suffix = "_own"
     else:
-        start, end = load.during
-        when = note.t("note_data_window", start=note.n(start), end=note.n(end))
-    working = note.scene.positions.working
-    if load.stroke is not None and (working is None or load.stroke.link != working.link) and load.during != "always":
-        when += " " + note.t("note_data_of_stroke", link=load.stroke.link)
-    return when
+        stroke, suffix = {}, ""
+    if load.diagram:
+        return note.t("note_data_diagram" + suffix, start=note.n(load.diagram[0][0]), end=note.n(load.diagram[-1][0]),
+                      **stroke)
+    if load.during == "always":
+        return note.text["note_data_always"]
+    if isinstance(load.during, str):
+        return note.t("note_data_working_own", **stroke) if suffix else note.text[f"note_data_{load.during}"]
+    start, end = load.during
+    return note.t("note_data_window" + suffix, start=note.n(start), end=note.n(end), **stroke)
+
+
+# A load's own idle stroke is the one its link makes the other way.
+_OPPOSITE = {"forward": "backward", "backward": "forward", "cw": "ccw", "ccw": "cw"}
 
 
 def _friction_rows(note: DataWriter) -> list[list[str]]:
