@@ -143,7 +143,7 @@ BLANK = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" vi
 def sequence(lines: list[str], text) -> list[tuple[str, str, int]]:
     """What each line is, in order: ("caption" or "lead", "table" or "figure", number); other lines left out."""
     leads = {kind: [template(text[key]) for key in keys] for kind, keys in
-             (("table", ("table_lead", "note_groups_lead")), ("figure", ("figure_lead", "plot_lead")))}
+             (("table", ("table_lead", "note_groups_lead", "note_data_masses_table_lead", "note_data_table_lead")), ("figure", ("figure_lead", "plot_lead")))}
     # A vector equation's and a force polygon's paragraph ends with the sentence that refers to its table.
     leads["table"] += [re.compile(".*" + template(text[key]).pattern)
                        for key in ("note_equation_table_lead", "note_polygon_table_lead")]
