@@ -13,7 +13,6 @@ from collections.abc import Mapping, Sequence
 from typing import Protocol
 
 from ..loads import external_names
-from ..machine_motion import ConstantTorque, KlossMotor
 from ..scene import LoadSpec, Scene
 from ..units import RPM
 
@@ -174,6 +173,11 @@ def _dynamics_rows(note: DataWriter) -> list[list[str]]:
 
 
 def _motor_rows(note: DataWriter, motor) -> Sequence[list[str]]:
+    # Imported here, where a scene's motor has loaded the equation of motion already: the package brings scipy's
+    # integrators and optimisers with it, which at the module's head every run's note loaded (0.4 s of a cold run
+    # of a linkage without [dynamics]).
+    from ..machine_motion import ConstantTorque, KlossMotor
+
     text = note.text
     if isinstance(motor, ConstantTorque):
         rows = [[text["note_data_motor_constant"], "M", f"{note.n(motor.torque)} {text['newton_metre']}"]]
