@@ -28,6 +28,9 @@ LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1
 # The way tried first (:func:`first_fitting`).  Each way is a force sheet laid out afresh, its labels placed: trying
 # all nine, largest first, made a run's sheets a third slower.
 PROBE_STEPS = (1, 1)
+# The most combinations of the force sheets' ways packed each in turn where the greedy choice may have missed a
+# saving (:meth:`CutChoice._combined`): the fixtures' and starters' have at most 25 (bench/sheet_cuts.py).
+MOST_COMBINATIONS = 36
 
 
 def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequence[Panel], sheet: str,
@@ -144,8 +147,34 @@ class CutChoice:
                     tried = [*together[:k], picked[k], *together[k + 1:]]
                     if self.sheets_taken(tried, taken + 1) <= taken:
                         together = tried
-                picked = together
-        return picked
+                picked, fewest = together, taken
+        return self._combined(picked, fewest)
+
+    def _combined(self, picked: list[int], fewest: float) -> list[int]:
+        """``picked``, or where the sheets' ways are few enough to pack every combination of them
+        (:data:`MOST_COMBINATIONS`), the one that packs on the fewest sheets, fewer than ``picked``'s ``fewest``: of
+        those as few, the one with fewest sheets standing every drawing apart, then the ways :meth:`fewest` prefers.
+
+        A way changed one sheet at a time saves nothing where only two
+        changed together do: the engine's force sheets on its own A2 stood
+        on three sheets where a cut of each together puts them on two, the
+        Stephenson six-bar's Russian ones likewise on its A1
+        (bench/sheet_cuts.py: six runs of 171 took a sheet more than
+        every combination of their ways).
+        """
+        varied = [k for k, ways in enumerate(self.ways_of) if len(ways) > 1]
+        if math.prod(len(self.ways_of[k]) for k in varied) > MOST_COMBINATIONS:
+            return picked
+        best: tuple[tuple[float, int], list[int]] | None = None
+        for combination in itertools.product(*(self._ranked(k) for k in varied)):
+            tried = list(picked)
+            for k, way in zip(varied, combination, strict=True):
+                tried[k] = way
+            # Packed only where the drawings' area leaves room for as few sheets as the best so far.
+            taken = self.sheets_taken(tried, fewest if best is None else best[0][0] + 1)
+            if taken < fewest and (best is None or (taken, self.drawings_apart(tried)) < best[0]):
+                best = ((taken, self.drawings_apart(tried)), tried)
+        return picked if best is None else best[1]
 
     def _preferred(self, fewer_parts: bool) -> Iterator[tuple[int, int]]:
         """Each sheet's cuts after its first (sheet, way), those into no more parts than its first, or those into
