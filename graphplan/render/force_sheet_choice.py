@@ -14,7 +14,7 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 
 from ..errors import SceneError
-from .packing import Page, Panel, area_allows, pack, reads_in_order
+from .packing import Page, Panel, area_allows, least_area, pack, reads_in_order
 
 # A force sheet whole, the ways it may stand on sheets, its rows apart (:func:`~graphplan.render.sheet._rows_apart`:
 # none where that is no other way), and the same sheet drawn larger by given standard steps of μl and μF (made when
@@ -164,6 +164,11 @@ class CutChoice:
         """
         varied = [k for k, ways in enumerate(self.ways_of) if len(ways) > 1]
         if math.prod(len(self.ways_of[k]) for k in varied) > MOST_COMBINATIONS:
+            return picked
+        # Nothing packed where even each sheet's way of least area leaves no room for a sheet fewer: the Stephenson
+        # six-bar's 25 combinations on its English A1.
+        smallest = [part for ways in self.ways_of for part in min(ways, key=lambda way: sum(map(least_area, way)))]
+        if not area_allows([*smallest, *self.after], int(fewest) - 1, self.sheet, self.form):
             return picked
         best: tuple[tuple[float, int], list[int]] | None = None
         for combination in itertools.product(*(self._ranked(k) for k in varied)):

@@ -811,7 +811,7 @@ def area_allows(panels: Sequence[Panel], count: int, sheet: str, form: str) -> b
     """
     check_sheet(sheet)
     room = max(_room_area(page_geometry(sheet, form, portrait)) for portrait in orientations(sheet))
-    return sum(map(_least_area, panels)) <= count * room + 1e-6
+    return sum(map(least_area, panels)) <= count * room + 1e-6
 
 
 def _room_area(geometry: PageGeometry) -> float:
@@ -825,7 +825,7 @@ def _room_area(geometry: PageGeometry) -> float:
     return area
 
 
-def _least_area(panel: Panel) -> float:
+def least_area(panel: Panel) -> float:
     """The least area ``panel`` takes on sheets, grown by half the gap round it (:func:`area_allows`)."""
     if panel.runs is not None:
         return 0.0  # taken run by run, each under a heading of its own: no less than nothing
