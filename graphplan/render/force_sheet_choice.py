@@ -29,8 +29,9 @@ LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1
 # all nine, largest first, made a run's sheets a third slower.
 PROBE_STEPS = (1, 1)
 # The most combinations of the force sheets' ways packed each in turn where the greedy choice may have missed a
-# saving (:meth:`CutChoice._combined`): the fixtures' and starters' have at most 25 (bench/sheet_cuts.py).
-MOST_COMBINATIONS = 36
+# saving (:meth:`CutChoice._combined`), each a packing of some 30 ms: the engine's 16 on its A2 save a sheet; the
+# Stephenson six-bar's 25 on its A1 took its run 40 % longer and save one only in Russian (bench/sheet_cuts.py).
+MOST_COMBINATIONS = 16
 
 
 def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequence[Panel], sheet: str,
@@ -158,19 +159,20 @@ class CutChoice:
         A way changed one sheet at a time saves nothing where only two
         changed together do: the engine's force sheets on its own A2 stood
         on three sheets where a cut of each together puts them on two, the
-        Stephenson six-bar's Russian ones likewise on its A1
-        (bench/sheet_cuts.py: six runs of 171 took a sheet more than
-        every combination of their ways).
+        triad with a slider's likewise on A3 (bench/sheet_cuts.py: six runs
+        of 171 took a sheet more than every combination of their ways).
         """
         varied = [k for k, ways in enumerate(self.ways_of) if len(ways) > 1]
         if math.prod(len(self.ways_of[k]) for k in varied) > MOST_COMBINATIONS:
             return picked
-        # Nothing packed where even each sheet's way of least area leaves no room for a sheet fewer: the Stephenson
-        # six-bar's 25 combinations on its English A1.
+        # The fewest sheets any combination might take for its area, each sheet's way of least area counted: none is
+        # packed where that is no fewer than the choice's, and the search ends at a combination that takes it.
         smallest = [part for ways in self.ways_of for part in min(ways, key=lambda way: sum(map(least_area, way)))]
-        if not area_allows([*smallest, *self.after], int(fewest) - 1, self.sheet, self.form):
-            return picked
+        bound = next(count for count in itertools.count(1)
+                     if area_allows([*smallest, *self.after], count, self.sheet, self.form))
         best: tuple[tuple[float, int], list[int]] | None = None
+        if bound >= fewest:
+            return picked
         for combination in itertools.product(*(self._ranked(k) for k in varied)):
             tried = list(picked)
             for k, way in zip(varied, combination, strict=True):
@@ -179,6 +181,8 @@ class CutChoice:
             taken = self.sheets_taken(tried, fewest if best is None else best[0][0] + 1)
             if taken < fewest and (best is None or (taken, self.drawings_apart(tried)) < best[0]):
                 best = ((taken, self.drawings_apart(tried)), tried)
+                if taken <= bound and not best[0][1]:
+                    break
         return picked if best is None else best[1]
 
     def _preferred(self, fewer_parts: bool) -> Iterator[tuple[int, int]]:
