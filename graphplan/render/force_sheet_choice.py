@@ -106,8 +106,10 @@ class CutChoice:
         found = self.pages(picks)
         return found is None or reads_in_order(found)
 
-    def fewest(self) -> list[int]:
-        """The way of each sheet, by its index among its ways, that the greedy choice takes: the fewest sheets."""
+    def fewest(self, combined: bool = False) -> list[int]:
+        """The way of each sheet, by its index among its ways, that the greedy choice takes: the fewest sheets; with
+        ``combined``, every combination of few ways searched after it too (:meth:`_combined`), for the sheets a run
+        draws, not for the counts that choose a scale."""
         picked = [0] * len(self.cuts)  # the way each sheet takes, by its index among its ways
         if self.sheet == "none" or all(len(ways) == 1 for ways in self.ways_of):
             return picked
@@ -149,7 +151,7 @@ class CutChoice:
                     if self.sheets_taken(tried, taken + 1) <= taken:
                         together = tried
                 picked, fewest = together, taken
-        return self._combined(picked, fewest)
+        return self._combined(picked, fewest) if combined else picked
 
     def _combined(self, picked: list[int], fewest: float) -> list[int]:
         """``picked``, or where the sheets' ways are few enough to pack every combination of them

@@ -1180,7 +1180,7 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
         if parts:
             loads = loads_saving_a_sheet(parts, loads, smaller_loads, chosen, form)
     choice = CutChoice(cuts, loads, chosen, form, [apart for _, _, apart, _ in forces])
-    picked = choice.fewest()
+    picked = choice.fewest(combined=True)
     parts = choice.parts_of(picked)
     if larger and chosen != "none":
         parts, pages = larger_where_room(parts, loads, larger_ways(forces, parts), chosen, form,
