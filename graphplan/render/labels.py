@@ -27,7 +27,6 @@ from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
 from ..memo import RecentMemo
-from . import lettering
 from .primitives import (
     Arrow,
     Circle,
@@ -49,7 +48,7 @@ class Anchor:
 
     at: tuple[float, float]
     text: str
-    size: float = lettering.LETTER
+    size: float = 3.0
     prefer: float = math.pi / 4
     colour: str = "black"
     # The ends of the line the label names (an arm), beside any point of which it reads as naming it: a label left
@@ -70,19 +69,6 @@ def text_box(text: Text) -> BaseGeometry:
 def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     """The shapes of drawn primitives that a label must not cover."""
     return obstacles_and_shafts(items)[0]
-
-
-def ink_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
-    """:func:`obstacles_of`'s shapes with each line as wide as its stroke draws it: for what is set clear of a few
-    bold lines (a position's number round the crank's circle), where their middles alone let a number touch a 1 mm
-    link's ink."""
-    shapes: list[BaseGeometry] = []
-    for item in items:
-        found = obstacles_of([item])
-        if isinstance(item, Polyline) and not (item.closed and item.fill):
-            found = [shapely.buffer(shape, item.stroke.width / 2) for shape in found]
-        shapes += found
-    return shapes
 
 
 def obstacles_and_shafts(items: Sequence[Primitive]) -> tuple[list[BaseGeometry], list[bool]]:

@@ -1,0 +1,45 @@
+"""A position's number round the crank's circle on the plan of positions stands on no thin line: the other positions'
+outlines and the points' paths are broken under it, as a draftsman breaks a thin line under a number (ГОСТ 2.307).
+
+The numbers are set clear of the bold lines alone, among the thin ones: the Scotch yoke's 10 and 4 stood struck
+through by the ends of its slot at those positions, and the crank-rocker's 5 and 7 on the dashed path of B and the
+outlines of the rocker.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+import shapely
+from drawn_lines import stroked_shapes
+from sheet_texts import box, texts
+
+from graphplan.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+# Thinner than this (mm): the other positions' outlines (0.3), the paths (0.25), the crank's circle; the bold links
+# (0.7 and more) are what the numbers are set clear of.
+THIN_MM = 0.5
+
+
+def positions_plan(tmp_path: Path, scene: str) -> str:
+    if scene.startswith("new:"):
+        path = tmp_path / "scene.toml"
+        assert main(["new", scene.removeprefix("new:"), "--out", str(path)]) == 0
+    else:
+        path = ROOT / "fixtures" / f"{scene}.toml"
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
+    return (tmp_path / "out" / "positions.svg").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("scene", ["scotch_yoke", "new:crank-rocker", "ratchet_crank_rocker", "tangent_mechanism_prp"])
+def test_no_position_number_stands_on_a_thin_line(tmp_path, scene) -> None:
+    source = positions_plan(tmp_path, scene)
+    thin = shapely.STRtree(stroked_shapes(ET.fromstring(source), ("leaders", "labels", "caption"), THIN_MM))
+    numbers = [entry for entry in texts(source) if re.fullmatch(r"\d+", entry[4])]
+    assert len(numbers) >= 12, "the plan numbers its positions round the crank's circle"
+    struck = [entry[4] for entry in numbers if len(thin.query(shapely.box(*box(*entry)), predicate="intersects"))]
+    assert struck == []
