@@ -71,8 +71,10 @@ def note_of(tmp_path, locale: str) -> str:
 def test_an_engines_plans_give_the_gas_forces_and_the_weights_reduced_moment_and_the_note_says_so(tmp_path, locale,
                                                                                                    symbol):
     note = note_of(tmp_path, locale)
-    header = next(line for line in note.splitlines() if line.startswith("| ") and "kg·m²" in line
-                  or line.startswith("| ") and "кг·м²" in line)
+    # The dynamics' table of the plan positions: the initial data's table of masses, with its JS in kg·m², stands
+    # before it.
+    header = next(line for line in note.splitlines() if line.startswith("| ") and ("kg·m²" in line or "кг·м²" in line)
+                  and f"| {symbol}, " in line)
     columns = [cell.strip() for cell in header.strip("|").split("|")]
     # Chinese sets its bracket full width beside its words, "Md + MG（解析值）".
     bracket = "（" if locale == "zh" else " ("
