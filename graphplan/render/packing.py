@@ -106,8 +106,9 @@ class Panel:
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
     heading_scales: tuple[tuple[str, str], ...] = ()
     heading_comma: str = ", "  # what sets those scales apart (:attr:`force_rows.Heading.comma`)
-    # A force sheet drawn larger for a course sheet with room (:func:`force_sheet_choice.larger_where_room`): the μF of each of its
-    # polygons drawn at another than the record's, by its group's label, for the check of readings measured on it.
+    # A force sheet drawn larger for a course sheet with room (:func:`force_sheet_choice.larger_where_room`): the μF
+    # of each of its polygons drawn at another than the record's, by its group's label, for the check of readings
+    # measured on it.
     polygon_scales: tuple[tuple[str, float], ...] = ()
     # Of the same, the μF each group cut free (drawn larger too, or as the record) draws its arrows at, by its label,
     # with the reactions drawn whole at their length (:func:`force_bodies.free_body_arrows`): readings measured on
@@ -502,7 +503,7 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
 def reads_in_order(pages: Sequence[Page]) -> bool:
     """Whether every drawing read after another kind (:attr:`Panel.reads_after`) stands on the last sheet of that
     kind or after it: :func:`pack` puts it before only where an earlier sheet alone has room for it, which the
-    choice of the force sheets' cuts may still avoid (:func:`graphplan.render.sheet.fewest_sheets_cuts`)."""
+    choice of the force sheets' cuts may still avoid (:func:`graphplan.render.force_sheet_choice.fewest_sheets_cuts`)."""
     last_of_kind: dict[str, int] = {}
     for k, page in enumerate(pages):
         for panel, _, _ in page.placed:
@@ -807,7 +808,7 @@ def area_allows(panels: Sequence[Panel], count: int, sheet: str, form: str) -> b
     no other's takes, against an empty sheet's area grown by as much, less
     its title block and corner box.  A packing costs a tenth of a second and
     more: the cuts of the force sheets that cannot save a sheet are not
-    packed (:func:`graphplan.render.sheet.fewest_sheets_cuts`).
+    packed (:func:`graphplan.render.force_sheet_choice.fewest_sheets_cuts`).
     """
     check_sheet(sheet)
     room = max(_room_area(page_geometry(sheet, form, portrait)) for portrait in orientations(sheet))

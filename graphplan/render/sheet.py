@@ -534,8 +534,6 @@ def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
                               [apart for _, _, apart, _ in forces])
 
 
-
-
 def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[ForceSheetWays]:
     """Each force sheet of :func:`force_panels` whole (its rows down one column), the ways it may stand on
     sheets and its rows apart (:func:`fewest_sheets_cuts` chooses), and the same sheet drawn larger where an empty
@@ -738,8 +736,6 @@ def _finished(analysis: Analysis, drawn: force_layout.ForceSheet, one: Panel, cu
         return one, cuts
     return _drawn_at(one, drawn.length_scale), [[_drawn_at(part, drawn.length_scale) for part in panels]
                                                 for panels in cuts]
-
-
 
 
 def _larger_force_sheet(drawn: force_layout.ForceSheet, bodies: int,

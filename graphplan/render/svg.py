@@ -65,6 +65,8 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
 
     # Imported here, not with the module: the layouts that import to_svg are also measured by check and the sheet
     # packing, which write no SVG, and svgwrite (its validator's grammar built on import) is a good part of a start.
+    from xml.etree import ElementTree
+
     import svgwrite
 
     document = svgwrite.Drawing(size=(f"{_n(width)}mm", f"{_n(height)}mm"), profile="full", debug=False)
@@ -127,6 +129,4 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
     # svgwrite's tostring() serializes to UTF-8 bytes through a codec writer, a call for each of the document's
     # pieces, and decodes them again: ElementTree writes the same text straight to a string (as svgwrite's own note
     # on tostring() says Python 3 may), with no XML declaration either way.
-    from xml.etree import ElementTree
-
     return ElementTree.tostring(document.get_xml(), encoding="unicode")

@@ -13,7 +13,7 @@ from collections.abc import Mapping, Sequence
 from typing import Protocol
 
 from ..loads import external_names
-from ..scene import LoadSpec, Scene
+from ..scene import OTHER_SENSE, LoadSpec, Scene
 from ..units import RPM
 
 
@@ -107,7 +107,7 @@ def _when(note: DataWriter, load: LoadSpec) -> str:
     gives one other than the working link's working stroke, which its shares are then counted along."""
     working, own = note.scene.positions.working, load.stroke
     if own is not None and (working is None or (own.link, own.sense) != (working.link, working.sense)):
-        sense = own.sense if load.during != "idle" else _OPPOSITE[own.sense]
+        sense = own.sense if load.during != "idle" else OTHER_SENSE[own.sense]
         stroke = {"link": own.link, "sense": note.text[f"note_data_sense_{sense}"]}
         suffix = "_own"
     else:
@@ -122,9 +122,6 @@ def _when(note: DataWriter, load: LoadSpec) -> str:
     start, end = load.during
     return note.t("note_data_window" + suffix, start=note.n(start), end=note.n(end), **stroke)
 
-
-# A load's own idle stroke is the one its link makes the other way.
-_OPPOSITE = {"forward": "backward", "backward": "forward", "cw": "ccw", "ccw": "cw"}
 
 
 def _friction_rows(note: DataWriter) -> list[list[str]]:
