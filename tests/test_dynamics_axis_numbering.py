@@ -16,7 +16,13 @@ from shapely.geometry import box
 
 from graphplan.cli import main
 from graphplan.render import dynamics
-from graphplan.render.primitives import Polyline, Text, text_extent, text_width
+from graphplan.render.primitives import (
+    FONT_SIZE_PER_CAP,
+    Polyline,
+    Text,
+    text_extent,
+    text_width,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 COMPRESSOR = ROOT / "tests" / "scenes" / "compressor_indicator_diagram.toml"
@@ -54,6 +60,10 @@ def _segments(group: ElementTree.Element) -> list[tuple[tuple[float, float], tup
     return found
 
 
+def _at_number_height(text: ElementTree.Element) -> bool:
+    return abs(float(text.get("font-size")) - dynamics.NUMBER * FONT_SIZE_PER_CAP) < 0.002
+
+
 def _je_axis(group: ElementTree.Element) -> tuple[float, float, list[float], list[tuple[float, float]], float]:
     """The Je axis of a group read off the paper: its origin's x and its y, its ticks' x, its numbers as (value, the x
     of the tick each stands by) and μJ as the group's scale line writes it."""
@@ -66,10 +76,10 @@ def _je_axis(group: ElementTree.Element) -> tuple[float, float, list[float], lis
                    and start[0] > origin + 0.1)
     texts = list(group.iter(f"{SVG}text"))
     words = ["".join(t.itertext()) for t in texts]
-    name = next(t for t, w in zip(texts, words, strict=True) if w.startswith("J") and "²" in w and "/" not in w)
     numbers = []
     for text, said in zip(texts, words, strict=True):
-        if not FIGURES.fullmatch(said) or _number(said) <= 0 or text.get("font-size") != name.get("font-size"):
+        # The axes' numbers are lettered at their own height (lettering.AXIS_NUMBER), under the axis's name.
+        if not FIGURES.fullmatch(said) or _number(said) <= 0 or not _at_number_height(text):
             continue
         if abs(float(text.get("y")) - axis_y) > 8:
             continue
@@ -132,7 +142,7 @@ def _one_two_five(step: float) -> bool:
 def test_every_je_axis_shows_two_numbers_a_letter_apart_at_round_values(scale):
     """Over a sweep of largest Je and μJ: at least two numbers, each centred on its tick and a letter's width from the
     next; the ticks at equal round steps from nought, carried past the largest Je only as far as a second tick."""
-    gap = text_width("0", dynamics.LABEL)
+    gap = text_width("0", dynamics.NUMBER)
     for largest in np.geomspace(0.01, 400.0, 97):
         largest = float(largest)
         ticks = dynamics._inertia_ticks(_fake_model(largest), SimpleNamespace(inertia=scale))
@@ -151,7 +161,7 @@ def test_every_je_axis_shows_two_numbers_a_letter_apart_at_round_values(scale):
 
 
 def _centred(value: float, at: float) -> tuple[float, float, float, float]:
-    return text_extent(Text((at, 0.0), dynamics.short(value), dynamics.LABEL, "middle"))
+    return text_extent(Text((at, 0.0), dynamics.short(value), dynamics.NUMBER, "middle"))
 
 
 def test_an_axis_already_numbered_twice_or_more_keeps_its_ticks():

@@ -18,6 +18,7 @@ from shapely.geometry import LineString, box
 
 from graphplan.cli import main
 from graphplan.locale import strings
+from graphplan.render import dynamics
 from graphplan.render.primitives import text_width
 from graphplan.starters import starter
 
@@ -28,8 +29,8 @@ NUMBER = re.compile(r"−?\d+(?:[.,]\d+)?")
 # The colours of the speeds' ticks and ordinates (and the tangents) and of the grid.
 RED = "#b22222"
 GRID = "#9a9a9a"
-# The drawings' cap height of their lettering (mm); SVG's font-size is the em, the cap height 0.72 of it.
-CAP = 2.8
+# The drawings' cap height of their axes' numbers (mm); SVG's font-size is the em, the cap height 0.72 of it.
+CAP = dynamics.NUMBER
 CAP_PER_EM = 0.72
 # A letter's width at that height: the least gap between two numbers of an axis, and between a label and a number.
 LETTER = text_width("0", CAP)
@@ -158,10 +159,11 @@ def test_the_numbers_of_one_axis_stand_a_letter_apart(drawings, kind, locale):
             assert _gap(a, b) >= LETTER - 1e-6, f"{kind} {locale}: numbers at {a.bounds} and {b.bounds}"
 
 
-def test_the_compressors_je_numbers_go_to_a_coarser_step_and_keep_their_values(drawings):
-    """At μJ = 0.002 kg·m²/mm a step of 0.025 is 12.5 mm, and 0.05 beside 0.075 left under a letter between them;
-    every other tick numbered left 0.05 alone.  The ticks go to the next step of 1-2-5, 0.05, and run on to 0.1,
-    each numbered at its own tick (value / μJ from the Je axis's origin)."""
+def test_the_compressors_je_numbers_stand_a_letter_apart_each_at_its_ticks_value(drawings):
+    """At μJ = 0.002 kg·m²/mm a step of 0.025 is 12.5 mm.  Lettered at 2.8 mm, 0.05 beside 0.075 left under a letter
+    between them, and the ticks went to the next step of 1-2-5 (0.05, 0.1); at the standard 2.5 mm of the axes'
+    numbers they stand 3.5 mm apart, and every tick of 0.025 is numbered, each at its own tick (value / μJ from the
+    Je axis's origin).  (The coarser step where the numbers do crowd: test_dynamics_axis_numbering's sweep.)"""
     svg = drawings["compressor", "en"]
     groups = {g.get("id"): g for g in ElementTree.parse(svg).getroot().iter(f"{SVG}g") if g.get("id")}
     turned = groups["inertia"]
@@ -172,12 +174,12 @@ def test_the_compressors_je_numbers_go_to_a_coarser_step_and_keep_their_values(d
                         and t.get("text-anchor") == "end")) + 1.0 + 1.2
     scale = 0.002
     values = [float(words) for words, _ in numbers]
-    assert values == [0.05, 0.1]
+    assert values == [0.025, 0.05, 0.075]
     for words, x in numbers:
         assert x - origin == pytest.approx(float(words) / scale, abs=0.01)
     ticks = [float(m.group(2)) - float(m.group(3)) for p in turned.iter(f"{SVG}path")
              if (m := re.fullmatch(r"M([\d.]+),([\d.]+) L\1,([\d.]+)", p.get("d")))]
-    assert sum(abs(length - 2.4) < 0.01 for length in ticks) == 2   # 0.05 and 0.1 ticked, each numbered
+    assert sum(abs(length - 2.4) < 0.01 for length in ticks) == 3   # 0.025, 0.05 and 0.075 ticked, each numbered
 
 
 @pytest.mark.parametrize(("kind", "locale"), DRAWINGS)

@@ -22,6 +22,7 @@ from scene_texts import crank_press
 from shapely.geometry import LineString, box
 
 from graphplan.cli import main
+from graphplan.render import dynamics
 from graphplan.render.primitives import text_width
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -163,7 +164,8 @@ def test_a_moment_that_varies_is_given_no_value(tmp_path):
     assert not any(word.startswith("Mr =") for word in words)
 
 
-HEADING_CAP = 3.8
+# The cap height of each diagram's heading (mm).
+HEADING_CAP = dynamics.HEADING
 PART_CAPTION = {
     "en": re.compile(r"Figure (\d+)\. (.+) \(part (\d) of (\d)\): (.+)"),
     "ru": re.compile(r"Рисунок (\d+) — (.+) \(часть (\d) из (\d)\): (.+)"),

@@ -42,7 +42,8 @@ def _rows(items) -> dict[str, set[int]]:
     assert sorted(arrows.values()) == ["←", "→"]
     rows: dict[str, set[int]] = {"→": set(), "←": set()}
     for item in items:
-        if isinstance(item, Text) and item.size == layout.NUMBER_SIZE and item.text.isdigit():
+        # Centred on their ticks: the ordinate's numbers, lettered as high, stand at its left.
+        if isinstance(item, Text) and item.size == layout.NUMBER_SIZE and item.text.isdigit() and item.anchor == "middle":
             nearest = min(arrows, key=lambda y: abs(y - item.at[1]))
             rows[arrows[nearest]].add(int(item.text))
     return rows

@@ -122,9 +122,10 @@ def test_the_drawing_rings_and_writes_each_plan_position_s_value_at_its_travel_a
     texts = [item.text for item in items if isinstance(item, Text)]
     assert any(re.fullmatch(r"F4\.1 = 407\.7 N \(\d+\)", text) for text in texts)
     assert any(re.fullmatch(r"F4\.2 = −150 N \(\d+\)", text) for text in texts)
-    # Every position numbered under its tick, each stroke in its own row.
+    # Every position numbered under its tick (centred on it: the ordinate's numbers, lettered as high, stand at its
+    # left), each stroke in its own row.
     numbers = {item.text: item.at for item in items if isinstance(item, Text) and item.text.isdigit()
-               and item.size == layout.NUMBER_SIZE}
+               and item.size == layout.NUMBER_SIZE and item.anchor == "middle"}
     assert sorted(map(int, numbers)) == list(range(1, 13))
     for k, number in enumerate(diagram.numbers):
         assert numbers[str(number)][0] == pytest.approx(diagram.coordinates[k] / along)

@@ -454,7 +454,7 @@ def named_pole(message, kind):
 def test_a_plan_too_big_for_a4_names_the_largest_pole_distance_that_fits():
     """The shaper's acceleration plan at pa = 100 mm is 197 mm square: no room of an A4 holds it."""
     message = refusal_on_a4("shaper_six_bar")
-    assert "'plan-10-acceleration' (197 × 196 mm) at drawing.acceleration_pole = 100 mm: no A4 sheet holds it" in message
+    assert "'plan-10-acceleration' (197 × 195 mm) at drawing.acceleration_pole = 100 mm: no A4 sheet holds it" in message
     assert "velocity_pole" not in message and "choose A3 or a bigger sheet" in message
     fitting = named_pole(message, "acceleration")
     assert 50 < fitting < 100

@@ -34,6 +34,7 @@ from shapely.geometry import Point as ShapelyPoint
 from ..locale import Count, strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane, PolygonVector, static_couple
 from ..scales import format_scale, standard_scale
+from . import lettering
 from .force_rows import CAPTION_WIDTH_MM, caption_lines
 from .labels import Anchor, Placement, obstacles_of, place_labels, remembered
 from .numerals import angle_in_turn, significant
@@ -65,7 +66,9 @@ TITLE_GAP_MM = 8.0
 MOST_TITLE_LINES = 2
 # The dashed x-direction at the correction's tail, and the arc of its angle (mm).
 REFERENCE_MM = 16.0
-NAME_SIZE = 3.2
+# The heights of the vectors' names and of the correction's angle θ (mm, render/lettering.py).
+NAME_SIZE = lettering.NAME
+ANGLE_NAME_SIZE = lettering.ARM_NAME
 # A correction that would lie along a mass vector (one mass, masses at one angle, a couple: the polygon a straight
 # line) would hide it: it is drawn this far beside the chain, parallel to where it closes the polygon, with thin
 # leaders from the chain's ends, as a textbook draws the closing side of a flat polygon (mm).
@@ -313,7 +316,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str], plac
     if angle_marks and plane.angle_deg is not None:
         half = math.radians(plane.angle_deg) / 2
         at = tail + (radius + 1.0) * complex(math.cos(half), math.sin(half))
-        anchors.append(Anchor(_xy(at), f"θ{plane.name}", NAME_SIZE - 0.4, half, _ANGLE.colour))
+        anchors.append(Anchor(_xy(at), f"θ{plane.name}", ANGLE_NAME_SIZE, half, _ANGLE.colour))
     labels = _lettered(anchors, figure, [*angle_marks, *arrows])
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]

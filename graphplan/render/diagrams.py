@@ -28,6 +28,7 @@ from shapely.strtree import STRtree
 from ..kinematic_diagrams import KinematicDiagrams
 from ..locale import strings
 from ..scales import format_scale
+from . import lettering
 from .labels import obstacles_of, text_box
 from .numerals import scale_factor
 from .primitives import (
@@ -58,11 +59,17 @@ _THIN = Stroke(0.18, "#555555")
 PLAN_RING_MM = 1.1
 _RAY = Stroke(0.15, "#7a7a7a")
 
-TITLE_SIZE = 6.0
-CAPTION_SIZE = 4.0
-SCALE_SIZE = 3.2
-AXIS_LABEL_SIZE = 3.5
-NUMBER_SIZE = 2.5
+# The heights of the lettering (mm, render/lettering.py): the drawing's title, each diagram's caption, the scales
+# and the words under the diagrams, the axes' names, the positions' numbers, the pole distance's H.
+TITLE_SIZE = lettering.TITLE
+CAPTION_SIZE = lettering.CAPTION
+SCALE_SIZE = lettering.SCALE
+AXIS_LABEL_SIZE = lettering.AXIS_LABEL
+NUMBER_SIZE = lettering.AXIS_NUMBER
+POLE_DISTANCE_SIZE = lettering.DIMENSION
+# A diagram's caption stands on its scale line with this much paper (mm) between the scale line's capitals and the
+# caption's tails.
+CAPTION_CLEARANCE_MM = 1.1
 # The band the positions' numbers stand in, as a hand drawing keeps it: its top this far (mm) under the φ axis, its
 # depth a number's box (``text_extent``: 0.3 of the size under the baseline, 1.15 over it).  Fixed by the font
 # size alone, so that a diagram's extent is known before a number is placed (:func:`parts` ``lettered``).
@@ -139,8 +146,12 @@ def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None,
     extents[-1] = _together(extents[-1], _extent([footer]))
     left = min(extent[0] for extent in extents)
     title = words["kd_title"].format(link=record.link, point=record.point or "")
-    heading = Text((left, extents[0][3] + 6.0), title, TITLE_SIZE, "start", weight="bold")
-    drawn[0] = [*drawn[0], Layer("sheet-title", (heading,))]
+    # Broken to the diagrams' width, each line over the next: at 7 mm the Russian title ran 277 mm, wider than the
+    # diagrams on a small sheet.
+    lines = fitted(title, max(extent[2] for extent in extents) - left, TITLE_SIZE, "bold")
+    heading = tuple(Text((left, extents[0][3] + 6.0 + (len(lines) - 1 - k) * LINE_SPACING * TITLE_SIZE), line,
+                         TITLE_SIZE, "start", weight="bold") for k, line in enumerate(lines))
+    drawn[0] = [*drawn[0], Layer("sheet-title", heading)]
     return drawn
 
 
@@ -267,9 +278,14 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
     width = length + AXIS_RUN_MM - left
     title = words[f"kd_{kind}_title"].format(symbol=symbol, along=_abscissa(record, words))
     scale_lines = fitted(_scale_line(record, kind, words, unit), width - 8.0, SCALE_SIZE)
+    # The caption's name broken as its scales are (at 5 mm a Russian name ran 176 mm, wider than a small sheet's
+    # diagram), its last line on them.
+    title_lines = fitted(title, width, CAPTION_SIZE, "bold")
     lowest = high + AXIS_RUN_MM + CAPTION_ROOM_MM - 10.5
     raised = (len(scale_lines) - 1) * LINE_SPACING * SCALE_SIZE
-    caption = (Text((0.0, lowest + raised + 5.5), title, CAPTION_SIZE, "start", weight="bold"),
+    named = lowest + raised + SCALE_SIZE + CAPTION_CLEARANCE_MM + 0.3 * CAPTION_SIZE
+    caption = (*(Text((0.0, named + (len(title_lines) - 1 - k) * LINE_SPACING * CAPTION_SIZE), line, CAPTION_SIZE,
+                      "start", weight="bold") for k, line in enumerate(title_lines)),
                *(Text((8.0, lowest + raised - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
                  for k, line in enumerate(scale_lines)))
     # Under the numbers' band wherever they stand, so that the words under the diagram move with no label.
@@ -369,7 +385,7 @@ def _pole_distance(word: str, pole: float, foot: float, high: float, obstacles: 
     of the distance just over the axis (between the rays where they fan over and under it); where the rays leave
     none, the spot that covers fewest.  Every spot lies between the ordinate axis's ``foot`` and its top, and
     within the distance: inside the diagram's extent."""
-    size = NUMBER_SIZE + 0.5
+    size = POLE_DISTANCE_SIZE
     half = text_width(word, size) / 2
     xs = np.arange(-pole + half + 1.5, -half - 1.0 + 1e-9, 0.5)
     if not len(xs):
@@ -409,7 +425,7 @@ def _strokes(record: KinematicDiagrams, words: Mapping[str, str], y: float) -> l
                                (end, length, "kd_idle_stroke", 2.0 * math.pi - record.stroke_end)):
         items.append(Polyline(((x0, y), (x1, y)), _THIN))
         items.extend(Polyline(((x, y - 1.5), (x, y + 1.5)), _THIN) for x in (x0, x1))
-        items.append(Text(((x0 + x1) / 2, y - 4.5), words[key].format(angle=f"{math.degrees(angle):.1f}"),
+        items.append(Text(((x0 + x1) / 2, y - 1.3 - SCALE_SIZE), words[key].format(angle=f"{math.degrees(angle):.1f}"),
                           SCALE_SIZE, "middle"))
     return items
 
@@ -466,7 +482,10 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
     ]
-    width = max(scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole), second + 40.0)
+    # As far as the diagrams reach right of their ordinate axes, where the lines start: counted with the poles' room
+    # left of the axes, a line of the scales at 3.5 mm ran 8 mm past the φ axes' arrows and took the diagrams off
+    # the sheet they had shared with a plan sheet.
+    width = max(scales.axis_mm + AXIS_RUN_MM + 6.0, second + 40.0)
     conventions = list(_conventions(record, words))
     # What the diagrams count otherwise than results.json stands beside the legend where it fits there: a line
     # more under the diagrams took them off a sheet they had shared.

@@ -10,13 +10,15 @@ from __future__ import annotations
 import cmath
 import math
 
+from . import lettering
 from .primitives import Point, Polyline, Primitive, Stroke, Text, arrowhead, text_extent, to_complex, to_xy
 
 DIMENSION_STROKE = Stroke(0.25)
-# ESKD 2.307: extension lines run 1 to 5 mm past the dimension line; arrowheads about 2.5 mm; text 3.5 mm.
+# ESKD 2.307: extension lines run 1 to 5 mm past the dimension line; arrowheads about 2.5 mm; text 3.5 mm
+# (lettering.DIMENSION).
 _PAST_MM = 2.0
 _HEAD_MM = 2.5
-_TEXT_MM = 3.5
+_TEXT_MM = lettering.DIMENSION
 _TEXT_GAP_MM = 1.0
 
 

@@ -30,6 +30,7 @@ from shapely.geometry.base import BaseGeometry
 from ..locale import strings
 from ..scales import fit_scale, format_scale
 from ..units import RPM
+from . import lettering
 from .labels import Anchor, broken_under, obstacles_of, place_labels, remembered
 from .numerals import number as note_number
 from .numerals import short, worked_out
@@ -66,10 +67,12 @@ ENERGY_MM = 55.0
 ENERGY_MASS_MM = 80.0
 # Space between the diagrams (mm).
 GAP_MM = 24.0
-# Letter sizes (cap height, mm).
-LABEL = 2.8
-HEADING = 3.8
-TITLE = 5.0
+# The heights of the lettering (mm, render/lettering.py): the axes' numbers; the axes' names, the scales, the
+# legends and the words on and under the diagrams; each diagram's heading; the drawing's title.
+NUMBER = lettering.AXIS_NUMBER
+LABEL = lettering.AXIS_LABEL
+HEADING = lettering.CAPTION
+TITLE = lettering.TITLE
 # The drawing's title, laid over the first of the parts a note shows it in.
 TITLE_LAYER = "title"
 # How far an axis runs past its last tick, to its arrowhead (mm).
@@ -101,15 +104,18 @@ _SPEED_ORDINATE = Stroke(0.2, _TANGENT.colour)
 SPEED_TICK_MM = 2.0
 # A plan position's point on the energy–mass diagram and the size of its number.
 POSITION_DOT_MM = 0.5
-POSITION_NUMBER = 2.5
+POSITION_NUMBER = lettering.CURVE_NUMBER
 # How far a letter's tail (ψ, the g of "kg") hangs under its baseline, in cap heights, and the gap kept between a
 # tangent's ψ and the Je axis with its name (mm).
 DESCENT = 0.3
 AXIS_WORDS_GAP_MM = 0.6
+# How far a diagram's heading stands over its scale's line (mm): the scale's capitals, and paper between them and the
+# heading's tails.
+HEADING_OVER_SCALE_MM = LABEL + 1.4 + DESCENT * HEADING
 # A letter's width (mm): the least gap between two numbers of one axis, and how far a label keeps off an axis's
 # numbers.  Nearer, two numbers ran together into one ("0.05 0.075" read as one figure), and a label read as one of
 # the numbers (ωmin at φ = 0, hung left of the ΔT axis beside its "0", as the axis's numbering).
-NUMBER_GAP_MM = text_width("0", LABEL)
+NUMBER_GAP_MM = text_width("0", NUMBER)
 # How far the field runs past a level line at its edge (mm): ended at the line, the grid's and the
 # ordinate's ends made it read as the plot's frame (the engine's Mr = 206.25 N·m along the bottom of its diagram).
 LEVEL_MARGIN_MM = 3.0
@@ -342,7 +348,7 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         y = lift + (np.asarray(data) - base) / scale
         items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
     scale_y = top_mm + lift + AXIS_RUN_MM + 3.0
-    items.append(Text((0.0, scale_y + LABEL + 2.5), heading, HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y + HEADING_OVER_SCALE_MM), heading, HEADING, "start", weight="bold"))
     scale_line = f"{scale_text}, {_angle_scale(model, scales.angle, words)}"
     items.append(Text((0.0, scale_y), scale_line, LABEL, "start"))
     # The legend runs on along the scale's line, each curve's stroke before its name.
@@ -438,7 +444,7 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
         if at > 0:
             items.append(Polyline(((at, bottom_mm), (at, top_mm)), _GRID))
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        numbers.append(Text((at, bottom_mm - LABEL - 2.5), label, LABEL, "middle"))
+        numbers.append(Text((at, bottom_mm - NUMBER - 2.5), label, NUMBER, "middle"))
         items.append(numbers[-1])
     items.append(Text((width + AXIS_RUN_MM + 1.5, -LABEL / 2), name, LABEL, "start"))
     return items, numbers
@@ -456,13 +462,20 @@ def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales, 
         items.append(Polyline(((x, 0.0), (x, y)), _SPEED_ORDINATE))
         items.append(Polyline(((x, -SPEED_TICK_MM), (x, SPEED_TICK_MM)), _SPEED_EXTREME))
         items.append(dot_marker((x, y), 0.6, _SPEED_EXTREME.colour))
-        # Named on the side of the axis away from the curve there, where its ordinate does not run.
-        anchors.append(Anchor((x, 0.0), name, LABEL, -math.pi / 3 if y > 0 else math.pi / 3, _SPEED_EXTREME.colour))
+        # Named on the side of the axis away from the curve there, where its ordinate does not run; lettered as the
+        # axis's numbers are, a tick of which it names.
+        anchors.append(Anchor((x, 0.0), name, NUMBER, -math.pi / 3 if y > 0 else math.pi / 3, _SPEED_EXTREME.colour))
     # Kept off the axes too, by the gap a tangent's ψ keeps off the Je axis: hugging the φ axis among its ticks, the
     # shaper's ωmin stood 0.16 mm from the 210° tick and the compressor's 0.15 mm from the 180° grid line.
     axes = [shapely.buffer(shapely.linestrings((item.start, item.end)), AXIS_WORDS_GAP_MM)
             for item in drawn if isinstance(item, Arrow)]
-    placed = remembered(place_labels, anchors, obstacles_of([*drawn, *items]) + _numbering(diagram.numberings) + axes)
+    # And off every line by as much, the axes' ticks, the grid and their own ticks and ordinates: lettered 2.5 mm
+    # high, ωmin found the compressor's spot over its tick too tight and hugged its ordinate under the axis 0.1 mm
+    # off it.
+    marks = [shapely.buffer(shapely.linestrings(item.points), AXIS_WORDS_GAP_MM)
+             for item in [*drawn, *items] if isinstance(item, Polyline)]
+    placed = remembered(place_labels, anchors,
+                        obstacles_of([*drawn, *items]) + _numbering(diagram.numberings) + axes + marks)
     return items + list(placed.leaders) + list(placed.texts)
 
 
@@ -505,7 +518,7 @@ def _ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base
     for value in np.arange(first, high + step * 1e-9, step):
         at = broken_mm + (value - base) / scale
         items.append(Polyline(((x - TICK_MM, at), (x, at)), THIN))
-        numbers.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), short(value), LABEL, "end"))
+        numbers.append(Text((x - TICK_MM - 1.0, at - NUMBER / 2), short(value), NUMBER, "end"))
         items.append(numbers[-1])
     items.append(Text((x + 2.0, top_mm + broken_mm + AXIS_RUN_MM - LABEL), name, LABEL, "start"))
     return items, numbers
@@ -519,7 +532,7 @@ def _break_mark(x: float, lift: float) -> tuple[list[Primitive], Text]:
     zigzag = ((x, middle - w), (x - w, middle - w / 2), (x + w, middle + w / 2), (x, middle + w))
     lines: list[Primitive] = [Polyline(((x, 0.0), zigzag[0]), THIN), Polyline(zigzag, THIN),
                               Polyline((zigzag[-1], (x, lift)), THIN), Polyline(((x - TICK_MM, 0.0), (x, 0.0)), THIN)]
-    return lines, Text((x - TICK_MM - 1.0, -LABEL / 2), short(0.0), LABEL, "end")
+    return lines, Text((x - TICK_MM - 1.0, -NUMBER / 2), short(0.0), NUMBER, "end")
 
 
 def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scales,
@@ -585,12 +598,12 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     drawn = shapes_but(())
     beside_the_tangents = shapes_but(tangents)
     beside_the_lines = shapes_but([*tangents, curve_line])
-    near = LABEL + TICK_MM + 2.0
+    near = NUMBER + TICK_MM + 2.0
     every_tick = _inertia_ticks(model, scales)
     ticks = [(value, at) for value, at, numbered in every_tick if numbered]
     sides = []
-    for letter_y, crowd in ((TICK_MM + 1.0, (ys > 0) & (ys < near)), (-TICK_MM - 1.0 - LABEL, (ys < 0) & (ys > -near))):
-        struck = sum(any(_ink(Text((at, letter_y), short(value), LABEL, "middle")).intersects(shape)
+    for letter_y, crowd in ((TICK_MM + 1.0, (ys > 0) & (ys < near)), (-TICK_MM - 1.0 - NUMBER, (ys < 0) & (ys > -near))):
+        struck = sum(any(_ink(Text((at, letter_y), short(value), NUMBER, "middle")).intersects(shape)
                          for shape in drawn) for value, at in ticks)
         sides.append((struck, int(np.count_nonzero(crowd)), letter_y))
     (_, _, letter_y), (_, _, other_y) = sorted(sides)
@@ -608,9 +621,9 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
         # Clear of the lines, and a letter's width clear of the numbers set already and of the next one's usual spot.
         others = [_ink(number).buffer(NUMBER_GAP_MM, join_style="mitre") for number in numbers]
         if k + 1 < len(ticks):
-            others.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), LABEL, "middle"))
+            others.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), NUMBER, "middle"))
                           .buffer(NUMBER_GAP_MM, join_style="mitre"))
-        candidates = [Text((x, y), short(value), LABEL, anchor) for x, y, anchor in spots]
+        candidates = [Text((x, y), short(value), NUMBER, anchor) for x, y, anchor in spots]
         number = None
         for shapes, breaking in ((drawn, None), (beside_the_tangents, over_tangents), (beside_the_lines, over_lines)):
             number = next((text for text in candidates
@@ -629,7 +642,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     items += numbers
     items.append(Text((axis_to + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
-    items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y + HEADING_OVER_SCALE_MM), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
                                       f"{words['dyn_energy_scale'].format(value=format_scale(scales.energy))}",
                       LABEL, "start"))
@@ -684,7 +697,7 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     for psi, label in _angle_ticks(model):
         at = -psi / angle
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
-        items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), label, LABEL, "end"))
+        items.append(Text((-TICK_MM - 1.0, at - NUMBER / 2), label, NUMBER, "end"))
     ticks = _inertia_ticks(model, scales)
     # Past the curve and past its last tick, which a coarser step may carry beyond the curve.
     axis_to = max(width, ticks[-1][1])
@@ -692,10 +705,10 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     for value, at, numbered in ticks:
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
         if numbered:
-            items.append(Text((at, TICK_MM + 1.0), short(value), LABEL, "middle"))
+            items.append(Text((at, TICK_MM + 1.0), short(value), NUMBER, "middle"))
     items.append(Text((axis_to + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     # Headed above its Je axis's lettering, as the other diagrams are above theirs.
-    scale_y = TICK_MM + 1.0 + LABEL + 2.5
+    scale_y = TICK_MM + 1.0 + NUMBER + 2.5
     if model.plans:
         # Je read off each position's velocity plan, ringed on the curve of the exact Je: the two methods side
         # by side; the legend on a line of its own under the scale, so that the diagram grows no wider.
@@ -704,7 +717,7 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
         items.append(Circle((PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((2 * PLAN_RING_MM + 2.0, scale_y), words["dyn_inertia_plans"], LABEL, "start"))
         scale_y += LABEL + 2.0
-    items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_inertia"], HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y + HEADING_OVER_SCALE_MM), words["dyn_inertia"], HEADING, "start", weight="bold"))
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
                                       f"{_angle_scale(model, angle, words)}", LABEL, "start"))
     return items
@@ -751,7 +764,7 @@ def _numbered_every(values: Sequence[float], step: float, scale: float) -> int:
     """How many ticks at ``step`` apart (``scale`` a unit per mm) each number of ``values`` written centred on its
     tick takes so as to stand a letter's width (:data:`NUMBER_GAP_MM`) from its neighbour's: 1, or 2 for every other
     tick, ..."""
-    halves = [text_width(short(value), LABEL) / 2 for value in values]
+    halves = [text_width(short(value), NUMBER) / 2 for value in values]
     # Two neighbours' numbers, each centred on its tick, need half of each one's width and the gap between the ticks.
     needed = max((sum(pair) + NUMBER_GAP_MM for pair in itertools.pairwise(halves)), default=0.0)
     return max(1, math.ceil(needed / (step / scale) - 1e-9))

@@ -42,6 +42,7 @@ from .force_marks import (
     ALONG_BAR_MM,
     ALONG_BAR_SHARE,
     ARM,
+    ARM_NAME_SIZE,
     BALANCING,
     BESIDE_MM,
     LEAST_ARROW_MM,
@@ -690,7 +691,7 @@ def _displacements(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[P
         centre = _c(paper(sheet.positions[load.point]))
         shifted = _c(paper(sheet.positions[load.point] + load.offset))
         items.append(Polyline((_xy(centre), _xy(shifted)), ARM))
-        anchors.append(Anchor(_xy((centre + shifted) / 2), load_symbol(f"hu{load.link}", sheet.text), NAME_SIZE - 0.4,
+        anchors.append(Anchor(_xy((centre + shifted) / 2), load_symbol(f"hu{load.link}", sheet.text), ARM_NAME_SIZE,
                               direction_rad(1j * (shifted - centre)), ARM.colour))
     return items, anchors
 
@@ -726,7 +727,7 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                     continue
                 items += arm_with_run_on(centre, start, end, unit)
                 foot = perpendicular_foot(centre, start, unit)
-                anchors.append(Anchor(_xy((centre + foot) / 2), name, NAME_SIZE - 0.4,
+                anchors.append(Anchor(_xy((centre + foot) / 2), name, ARM_NAME_SIZE,
                                       direction_rad(1j * (foot - centre)), ARM.colour, along=(_xy(centre), _xy(foot))))
             else:
                 # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.

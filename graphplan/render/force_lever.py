@@ -28,6 +28,7 @@ from ..scales import fit_scale, format_scale
 from .force_marks import (
     ALONG_BAR_MM,
     ARM,
+    ARM_NAME_SIZE,
     BALANCING,
     BESIDE_MM,
     LEAST_ARROW_MM,
@@ -307,7 +308,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             continue
         arm_layers.append(Layer(svg_id("lever-arm", name), tuple(arm_with_run_on(0j, start, end, unit))))
         # Named out of the pole's reach where the room round it allows; a name left within it is dropped (below).
-        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, direction_rad(1j * foot), ARM.colour,
+        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, ARM_NAME_SIZE, direction_rad(1j * foot), ARM.colour,
                                   along=((0.0, 0.0), _xy(foot)), keep_off=((0.0, 0.0), POLE_CLEAR_MM)))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
     parts = [_factored(terms, arm) for arm, terms in by_arm.items()]
@@ -330,7 +331,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # within reach of its arrow is off the lines), or that stands nearer another load's free end than its own, led to
     # it or not (G3 by Mu4″'s head on the lift's lever, Fu6 by Ff16's on the knee press's), is given under the lever
     # too, by the point its arrow stands at, one at a time, each point keeping one arrow unnamed at most: the only
-    # arrow at s6 without a name is G6's.
+    # arrow at s6 without a name is G6's.  Last, so is a load's at a point whose letter lies on a line.
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     shafts = [LineString((item.start, item.end)) for item in arrows if isinstance(item, Arrow)]
     crowded: list[Anchor] = []
@@ -353,6 +354,13 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                  and load_points[anchor.text] not in taken
                  and (label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
                       or _by_another_head(anchor, placed, heads, labels.leaders))]
+        if not lying:
+            # A point whose letter the names round it left only a spot on a line (the class III triad's s4 and s5
+            # among the loads at 3.5 mm) has one of its loads given under the lever, as a name lying on a line is.
+            pressed = [group for group, anchor, placed in zip(groups, points, labels.texts[len(loads):], strict=False)
+                       if label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
+            lying = [anchor for anchor in loads if anchor.text != shown("Fb") and load_points[anchor.text] not in taken
+                     and any(load_points[anchor.text] in group for group in pressed)][:1]
         if not lying:
             break
         unnamed.append(lying[0])

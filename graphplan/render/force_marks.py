@@ -40,6 +40,7 @@ from ..motion import Motion
 from ..plans import Plan
 from ..scales import format_scale, standard_scale
 from ..wording import balancing_symbol
+from . import lettering
 from .force_rows import RunOn
 from .labels import (
     Anchor,
@@ -76,9 +77,10 @@ PER_LINE = 4
 # Between the values a caption line lists: a comma and two spaces, so that a value with a comma of its own (fE =
 # 0.1, φ = …) reads as one.  A line of symbols and numbers alone takes it in every language.
 VALUE_SEPARATOR = ",  "
-# Size of the letters of points and of the names of forces (cap height, mm).
-POINT_SIZE = 3.5
-NAME_SIZE = 3.2
+# The heights of the letters of points, of the names of forces and of the arms' names (mm, render/lettering.py).
+POINT_SIZE = lettering.LETTER
+NAME_SIZE = lettering.NAME
+ARM_NAME_SIZE = lettering.ARM_NAME
 
 LOAD = Stroke(0.45)
 BALANCING = Stroke(0.6, "#1f7a3a")

@@ -20,6 +20,7 @@ import re
 from collections.abc import Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass, replace
 
+from . import lettering
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, TITLE_LAYER, Arrangement, title_texts
 from .primitives import Layer, Text, bounds, bounds_of, moved_layers, text_width
 from .wrapping import NAME_BEFORE, fitted
@@ -44,8 +45,6 @@ CAPTION_BESIDE_WIDTHS_MM = (70.0, 85.0, 100.0, 120.0, 140.0, CAPTION_WIDTH_MM)
 # as few sheets as the best of every combination of them; the bound only keeps a sheet of many rows from trying all.
 MOST_CUTS = 4
 
-# The lettering sizes of GOST 2.304 and ISO 3098 (mm), each √2 times the one before.
-LETTER_SIZES = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)
 
 Fits = Callable[[float, float], bool]
 # The layer of a force sheet's (or a part's) heading: its title and the line of its scales; the plan sheet's
@@ -147,7 +146,7 @@ class Heading:
     @property
     def title_size(self) -> float:
         """The next size of GOST 2.304 / ISO 3098 above the captions': 7 mm over 5, 5 mm over 3.5."""
-        return next((size for size in LETTER_SIZES if size > self.size + 1e-9), self.size * math.sqrt(2))
+        return lettering.larger(self.size)
 
 
 def scales_line(scales: Sequence[tuple[str, str]], names: Sequence[str], comma: str = ", ") -> str:

@@ -22,6 +22,7 @@ from __future__ import annotations
 from collections.abc import MutableMapping, Sequence
 
 from ..scales import format_scale
+from . import lettering
 from .force_bodies import body
 from .force_lever import lever_drawing
 from .force_marks import ForceSheet, group_id
@@ -32,7 +33,7 @@ from .primitives import Layer
 
 # The captions' lettering where the usual does not fit a small sheet: the next size down of GOST 2.304 and
 # ISO 3098 (the usual is plans.CAPTION_SIZE, 5 mm).
-SMALL_CAPTION_SIZE = 3.5
+SMALL_CAPTION_SIZE = lettering.SMALL_CAPTION
 
 
 def layout(sheet: ForceSheet) -> list[Layer]:

@@ -27,6 +27,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
 from ..memo import RecentMemo
+from . import lettering
 from .primitives import (
     Arrow,
     Circle,
@@ -48,7 +49,7 @@ class Anchor:
 
     at: tuple[float, float]
     text: str
-    size: float = 3.0
+    size: float = lettering.LETTER
     prefer: float = math.pi / 4
     colour: str = "black"
     # The ends of the line the label names (an arm), beside any point of which it reads as naming it: a label left

@@ -29,6 +29,7 @@ from ..mechanism import Mechanism
 from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
+from . import lettering
 from .labels import Anchor, obstacles_of, open_direction, place_labels, remembered
 from .linkage import (
     GROUND_MARGIN_MM,
@@ -77,9 +78,10 @@ CAPTION_GAP_MM = 12.0
 # Line spacing of captions and titles, in letter heights.
 CAPTION_LINE = 1.6
 
-LETTER_SIZE = 4.0
-CAPTION_SIZE = 5.0
-TITLE_SIZE = 7.0
+# The heights of the lettering (mm, render/lettering.py): the points' letters, the captions, the sheet's title.
+LETTER_SIZE = lettering.LETTER
+CAPTION_SIZE = lettering.CAPTION
+TITLE_SIZE = lettering.TITLE
 # The layer of the sheet's title, over all its drawings: the heading its parts stand under apart.
 TITLE_LAYER = "sheet-title"
 
@@ -359,7 +361,7 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
             start = along + side - sweep / 2
             items.extend(curved_arrow(centre, TURN_RADIUS_MM, start, sweep, Stroke(0.45, colour), 2.8))
             tail = (centre[0] + TURN_RADIUS_MM * math.cos(start), centre[1] + TURN_RADIUS_MM * math.sin(start))
-            anchors.append(Anchor(tail, f"{symbol}{link}", LETTER_SIZE - 0.5, start, colour))
+            anchors.append(Anchor(tail, f"{symbol}{link}", lettering.NAME, start, colour))
     return items, anchors
 
 

@@ -25,7 +25,7 @@ from shapely.strtree import STRtree
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
-from . import dimensions
+from . import dimensions, lettering
 from .labels import (
     LABEL_GAP_MM,
     LABEL_SPACING,
@@ -73,7 +73,11 @@ from .primitives import (
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
 _PATH_STROKE = Stroke(0.25, "#1f5fa8", (2.0, 1.2))
 _CRANK_CIRCLE_STROKE = Stroke(0.25, "#7a7a7a")
-_LABEL = 3.0
+# The heights of the lettering (mm, render/lettering.py): the points' letters, the positions' numbers, a travel's
+# dimension (H, ψ).
+_LETTER_SIZE = lettering.POSITIONS_LETTER
+_NUMBER_SIZE = lettering.POSITION_NUMBER
+_DIMENSION_SIZE = lettering.DIMENSION
 # A point of the second extreme nearer than this to where it stands at the first (mm on the paper) is lettered there
 # already: a frame point, a pin that hardly moves.
 _SAME_POINT_MM = 2.0
@@ -134,7 +138,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     every = _mechanism_at(plan.positions, outlines, paper, _POSITION_STROKE, bold=False)
     bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
     # The springs and cylinders at the first bold position alone: drawn at every position they would hide the links.
-    loaded, load_pins = along_loads(plan.emphasised, 0, paper, _LABEL, MAIN, span=plan.paths)
+    loaded, load_pins = along_loads(plan.emphasised, 0, paper, _LETTER_SIZE, MAIN, span=plan.paths)
     bold += load_pins
     frame = _frame(plan, paper)
     paths = _paths(plan, paper)
@@ -297,7 +301,7 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
         middle = np.mean([to_complex(paper(complex(r))) for point in plan.paths.points.values()
                           for r in np.atleast_1d(point.r)])
         away = (track[0] + track[1]) / 2 - middle
-        tried = [dimensions.linear(to_xy(track[0]), to_xy(track[1]), side * away, offset, travel.text, _LABEL)
+        tried = [dimensions.linear(to_xy(track[0]), to_xy(track[1]), side * away, offset, travel.text, _DIMENSION_SIZE)
                  for offset in _STROKE_OFFSETS_MM for side in (1.0, -1.0)]
         return min(tried, key=crossed), []  # the first of the clearest: the nearest, away from the middle
     pivot = track[0]
@@ -335,15 +339,15 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
         # Written as a dimension's number is, by its arc's middle: left to the placer, it took a leader, the spot
         # beside the arc too tight for its spaced box.
         return [*arc, _beside_arc(pivot + cmath.rect(radius, middle), cmath.rect(1.0, side), travel.text)], []
-    return arc, [Anchor(to_xy(pivot + cmath.rect(radius, middle)), travel.text, _LABEL, prefer=middle)]
+    return arc, [Anchor(to_xy(pivot + cmath.rect(radius, middle)), travel.text, _DIMENSION_SIZE, prefer=middle)]
 
 
 def _beside_arc(at: complex, outward: complex, text: str) -> Text:
     """``text`` set level with its box's near side the placer's gap clear of ``at`` along ``outward``."""
-    left, bottom, right, top = text_extent(Text((0.0, 0.0), text, _LABEL, "middle"))
+    left, bottom, right, top = text_extent(Text((0.0, 0.0), text, _DIMENSION_SIZE, "middle"))
     reach = abs(outward.real) * (right - left) / 2 + abs(outward.imag) * (top - bottom) / 2 + LABEL_GAP_MM
     centre = at + outward * reach
-    return Text((centre.real, centre.imag - (top + bottom) / 2), text, _LABEL, "middle")
+    return Text((centre.real, centre.imag - (top + bottom) / 2), text, _DIMENSION_SIZE, "middle")
 
 
 def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
@@ -371,7 +375,7 @@ def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     anchors = []
     for index, number in enumerate(plan.numbers):
         outward = complex(at(joint, index)) - centre
-        anchors.append(Anchor(paper(complex(at(joint, index))), str(number), _LABEL, math.atan2(outward.imag, outward.real),
+        anchors.append(Anchor(paper(complex(at(joint, index))), str(number), _NUMBER_SIZE, math.atan2(outward.imag, outward.real),
                               "#333333"))
     return anchors
 
@@ -427,7 +431,7 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[Base
         pin = next((point for point in lettered if abs(complex(*point) - item.pin) < _SAME_PIN_MM), None)
         if pin is None:
             return False
-        crowded.append(Anchor(pin, item.text, _LABEL,
+        crowded.append(Anchor(pin, item.text, _NUMBER_SIZE,
                               math.atan2(item.outward.imag, item.outward.real), _NUMBER_COLOUR))
         return True
 
@@ -514,13 +518,13 @@ def _number_text(item: _Number, out: float) -> Text:
     """The number of ``item`` set with the nearest side of its box ``out`` mm past :data:`_NUMBER_GAP_MM` off its
     pin, along the line from the pivot (and past the block on it): the box then stands wholly outside the crank's
     circle."""
-    width, height = text_width(item.text, _LABEL), 1.45 * _LABEL
+    width, height = text_width(item.text, _NUMBER_SIZE), 1.45 * _NUMBER_SIZE
     # The half-extent of the box along the outward line, and its middle above the text's baseline.
     reach = abs(item.outward.real) * width / 2 + abs(item.outward.imag) * height / 2
 
     def text(off: float) -> Text:
         middle = item.pin + item.outward * (_NUMBER_GAP_MM + off + reach)
-        return Text((middle.real, middle.imag - 0.425 * _LABEL), item.text, _LABEL, "middle", _NUMBER_COLOUR)
+        return Text((middle.real, middle.imag - 0.425 * _NUMBER_SIZE), item.text, _NUMBER_SIZE, "middle", _NUMBER_COLOUR)
 
     past = 0.0
     while item.block is not None and past < 10.0 and spaced_box(text(past), LABEL_SPACING / 2).intersects(item.block):
@@ -573,7 +577,7 @@ def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> l
         joint = complex(at(motion.points[driver.joint].r, index))
         outward = joint - centre
         if names and label:
-            anchors.append(Anchor(paper(joint), label, _LABEL, math.atan2(outward.imag, outward.real), "#333333"))
+            anchors.append(Anchor(paper(joint), label, _NUMBER_SIZE, math.atan2(outward.imag, outward.real), "#333333"))
         moving = [name for name in motion.points if name in drawn
                   and abs(complex(at(motion.points[name].r, index)) - complex(at(motion.points[name].r, 0)))
                   > _SAME_POINT_MM * plan.length_scale]
@@ -583,7 +587,7 @@ def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> l
         for name in moving:
             r = complex(at(motion.points[name].r, index))
             away = r - middle
-            anchors.append(Anchor(paper(r), f"{name}′", _LABEL, math.atan2(away.imag, away.real) if away else math.pi / 2))
+            anchors.append(Anchor(paper(r), f"{name}′", _LETTER_SIZE, math.atan2(away.imag, away.real) if away else math.pi / 2))
     return anchors
 
 
@@ -598,7 +602,7 @@ def _point_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     for name in names:
         r = complex(at(motion.points[name].r, 0))
         away = r - centroid
-        anchors.append(Anchor(paper(r), name, _LABEL, math.atan2(away.imag, away.real) if away else math.pi / 2))
+        anchors.append(Anchor(paper(r), name, _LETTER_SIZE, math.atan2(away.imag, away.real) if away else math.pi / 2))
     return anchors
 
 

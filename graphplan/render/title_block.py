@@ -35,6 +35,7 @@ from importlib import resources
 
 from ..locale import strings
 from ..scales import format_scale
+from . import lettering
 from .primitives import MAIN, Polyline, Primitive, Stroke, Text, has_wide, is_wide, text_width
 
 # The strings of the three forms and of what graphplan writes into them are the locale files' ``tb_`` keys;
@@ -62,11 +63,16 @@ STANDARD_RATIOS = {
 
 THIN = Stroke(0.25)
 # ISO 3098-0's smallest lettering (mm): a field set smaller to fit its box is hard to read printed.
-SMALLEST_LETTERING = 1.8
-LABEL_SIZE = 2.0
-# ISO 7200's field names: small, but not below ISO 3098's smallest lettering.
-CORNER_LABEL_SIZE = SMALLEST_LETTERING
-VALUE_SIZE = 3.5
+SMALLEST_LETTERING = lettering.SMALLEST
+# The heights of the block's lettering (mm), from the standard series (render/lettering.py): a field's printed
+# name, ISO 7200's small in its field's corner, what the fields say, the drawing's name and designation, the kind
+# of drawing (and ISO 7200's fields' values).  A text its box does not hold steps down the series (:func:`fitted`).
+LABEL_SIZE = lettering.BLOCK_LABEL
+CORNER_LABEL_SIZE = lettering.BLOCK_CORNER_LABEL
+VALUE_SIZE = lettering.BLOCK_VALUE
+NAME_SIZE = lettering.BLOCK_NAME
+DESIGNATION_SIZE = lettering.BLOCK_DESIGNATION
+KIND_SIZE = lettering.BLOCK_KIND
 # Room between a text and the lines of its box (mm): a value, a printed label.
 PADDING = 0.8
 LABEL_PADDING = 0.5
@@ -276,6 +282,13 @@ def title_block(form: str, fields: TitleBlockFields, text: Mapping[str, str],
     width, _ = SIZES[form]
     block = _Block(corner[0] - width, corner[1])
     draw[form](block, fields, text)
+    # A row (or column) of printed names is lettered at one height, as a draftsman letters it: the largest of the
+    # series that each of its boxes holds (ESKD's «Изм.» holds 1.8 mm, «№ докум.» beside it 2.5 mm).
+    least = {row: max(lettering.at_most(size), SMALLEST_LETTERING) for row, size in block.label_sizes.items()
+             if size < LABEL_SIZE}
+    if least:
+        block = _Block(corner[0] - width, corner[1], least)
+        draw[form](block, fields, text)
     return block.items
 
 
@@ -293,7 +306,7 @@ def corner_box(form: str, designation: str, corner: tuple[float, float, float, f
     length, depth = max(x1 - x0, y1 - y0), min(x1 - x0, y1 - y0)
     rotation, turn = (180.0, -1 + 0j) if x1 - x0 >= y1 - y0 else (90.0, 1j)
     along = (middle.real - length / 2, middle.imag - depth / 2, middle.real + length / 2, middle.imag + depth / 2)
-    for text in fitted(designation, along, 5.0):
+    for text in fitted(designation, along, DESIGNATION_SIZE):
         turned = middle + (complex(*text.at) - middle) * turn
         items.append(replace(text, at=(turned.real, turned.imag), rotation=rotation))
     return items
@@ -307,9 +320,13 @@ class _Block:
     padding, and «Изм.», «Разраб.», 年、月、日 stood against the block's thick lines.  (Above and below, a line of
     text has its descenders' room to spare: a sheet's number kept its size.)"""
 
-    def __init__(self, x: float, y: float) -> None:
+    def __init__(self, x: float, y: float, row_sizes: Mapping[str, float] | None = None) -> None:
         self.x, self.y = x, y
         self.items: list[Primitive] = []
+        # The height each row of printed names is lettered at (LABEL_SIZE where none is given), and the least that
+        # each row's labels were set at, by the row's name.
+        self.row_sizes = dict(row_sizes or {})
+        self.label_sizes: dict[str, float] = {}
         # Each line drawn, (x0, y0, x1, y1, stroke width) from the block's corner: what a text's box is inside of.
         self.lines: list[tuple[float, float, float, float, float]] = []
 
@@ -339,25 +356,31 @@ class _Block:
                        (0.0, height, width, height, MAIN.width), (0.0, 0.0, 0.0, height, MAIN.width)]
 
     def text(self, value: str, box: tuple[float, float, float, float], size: float = VALUE_SIZE,
-             anchor: str = "middle", weight: str = "normal", lines: int = 1, margin: float | None = None) -> None:
+             anchor: str = "middle", weight: str = "normal", lines: int = 1, margin: float | None = None,
+             padding: float = PADDING) -> None:
         """``value`` fitted into ``box`` (x0, y0, x1, y1 from the block's corner), ``margin`` mm from its sides (whose
-        2 mm, counted from the lines' middles, leave the paper :data:`NAME_MARGIN` says), else a padding from the
+        2 mm, counted from the lines' middles, leave the paper :data:`NAME_MARGIN` says), else ``padding`` from the
         lines' ink."""
         x0, y0, x1, y1 = self.inner(box) if margin is None else box
         self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), size, anchor,
-                                 weight, lines, margin=margin))
+                                 weight, lines, padding=padding, margin=margin))
 
     def label(self, value: str, box: tuple[float, float, float, float], anchor: str = "middle",
-              padding: float = LABEL_PADDING) -> None:
+              padding: float = LABEL_PADDING, row: str | None = None) -> None:
+        """A printed name (or a short value set as one) fitted into ``box``; one of a ``row`` of names lettered
+        at the row's height."""
         x0, y0, x1, y1 = self.inner(box)
         at = (self.x + x0, self.y + y0, self.x + x1, self.y + y1)
-        texts = fitted(value, at, LABEL_SIZE, anchor, padding=padding)
+        size = self.row_sizes.get(row, LABEL_SIZE) if row is not None else LABEL_SIZE
+        texts = fitted(value, at, size, anchor, padding=padding)
         if texts and min(text.size for text in texts) < SMALLEST_LETTERING:
             # A name its padding would set below the smallest lettering gives up its padding first, as far as it
             # must and the ink allows: ESKD's «Изм.» in its 7 mm between two thick lines.
             room = (x1 - x0 - text_width(value, SMALLEST_LETTERING)) / 2 - 1e-6
             if room >= 0:
-                texts = fitted(value, at, LABEL_SIZE, anchor, padding=min(padding, room))
+                texts = fitted(value, at, size, anchor, padding=min(padding, room))
+        if texts and row is not None:
+            self.label_sizes[row] = min(self.label_sizes.get(row, size), *(text.size for text in texts))
         self.items.extend(texts)
 
     def corner_label(self, value: str, box: tuple[float, float, float, float]) -> None:
@@ -393,25 +416,26 @@ def _eskd(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> N
     header = 30.0
     for key, (x0, x1) in (("eskd_change", (0.0, 7.0)), ("eskd_sheet", (7.0, 17.0)), ("eskd_document", (17.0, 40.0)),
                           ("eskd_signature", (40.0, 55.0)), ("eskd_date", (55.0, 65.0))):
-        block.label(text[key], (x0, header, x1, header + 5.0))
+        block.label(text[key], (x0, header, x1, header + 5.0), row="changes")
     people = (("eskd_designed", 25.0, fields.author), ("eskd_checked", 20.0, fields.checked_by),
               ("eskd_technical_control", 15.0, ""), ("eskd_standards_control", 5.0, ""),
               ("eskd_approved", 0.0, fields.approved_by))
     for key, y, name in people:
-        block.label(text[key], (0.0, y, 17.0, y + 5.0), "start")
-        block.text(name, (17.0, y, 40.0, y + 5.0), LABEL_SIZE, "start")
+        block.label(text[key], (0.0, y, 17.0, y + 5.0), "start", row="signatures")
+        # A name in its 5 mm row with a label's padding: a value's set it under 2.5 mm, the series' next down 1.8.
+        block.text(name, (17.0, y, 40.0, y + 5.0), LABEL_SIZE, "start", padding=LABEL_PADDING)
     if fields.date:
         block.label(fields.date, (55.0, 25.0, 65.0, 30.0))  # a label's padding: 10 mm hold dd.mm.yy
-    block.text(fields.designation, (65.0, 40.0, 185.0, 55.0), 5.0)
+    block.text(fields.designation, (65.0, 40.0, 185.0, 55.0), DESIGNATION_SIZE)
     _name(block, fields, (65.0, 15.0, 135.0, 40.0))
-    block.label(text["eskd_letter"], (135.0, 35.0, 150.0, 40.0))
-    block.label(text["eskd_mass"], (150.0, 35.0, 167.0, 40.0))
-    block.label(text["eskd_scale"], (167.0, 35.0, 185.0, 40.0))
+    block.label(text["eskd_letter"], (135.0, 35.0, 150.0, 40.0), row="others")
+    block.label(text["eskd_mass"], (150.0, 35.0, 167.0, 40.0), row="others")
+    block.label(text["eskd_scale"], (167.0, 35.0, 185.0, 40.0), row="others")
     block.text(fields.scale, (167.0, 20.0, 185.0, 35.0), VALUE_SIZE, lines=SCALE_LINES)
-    block.label(text["eskd_sheet"], (135.0, 15.0, 145.0, 20.0), "start")
-    block.text(str(fields.sheet), (145.0, 15.0, 155.0, 20.0), LABEL_SIZE)
-    block.label(text["eskd_sheets"], (155.0, 15.0, 170.0, 20.0), "start")
-    block.text(str(fields.sheets), (170.0, 15.0, 185.0, 20.0), LABEL_SIZE)
+    block.label(text["eskd_sheet"], (135.0, 15.0, 145.0, 20.0), "start", row="sheets")
+    block.text(str(fields.sheet), (145.0, 15.0, 155.0, 20.0), LABEL_SIZE, padding=LABEL_PADDING)
+    block.label(text["eskd_sheets"], (155.0, 15.0, 170.0, 20.0), "start", row="sheets")
+    block.text(str(fields.sheets), (170.0, 15.0, 185.0, 20.0), LABEL_SIZE, padding=LABEL_PADDING)
     block.text(fields.organization, (135.0, 0.0, 185.0, 15.0), VALUE_SIZE, lines=2)
 
 
@@ -449,18 +473,18 @@ def _gb(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> Non
     for key, (x0, x1) in (("gb_mark", (0.0, 10.0)), ("gb_places", (10.0, 20.0)), ("gb_zone", (20.0, 36.0)),
                           ("gb_change_document", (36.0, 52.0)), ("gb_signature", (52.0, 64.0)),
                           ("gb_date", (64.0, 80.0))):
-        block.label(text[key], (x0, header, x1, header + 7.0), padding=PADDING)
+        block.label(text[key], (x0, header, x1, header + 7.0), padding=PADDING, row="changes")
     signatures = (("gb_designed", 21.0, 0.0, fields.author), ("gb_standardized", 21.0, 40.0, ""),
                   ("gb_checked", 7.0, 0.0, fields.checked_by), ("gb_process", 0.0, 0.0, ""),
                   ("gb_approved", 0.0, 40.0, fields.approved_by))
     for key, y, x, name in signatures:
-        block.label(text[key], (x, y, x + 12.0, y + 7.0))
+        block.label(text[key], (x, y, x + 12.0, y + 7.0), row="signatures")
         block.text(name, (x + 12.0, y, x + 24.0, y + 7.0), LABEL_SIZE)
     if fields.date:
         block.text(fields.date, (24.0, 21.0, 40.0, 28.0), LABEL_SIZE)
-    block.label(text["gb_stage"], (80.0, 21.0, 106.0, 28.0))
-    block.label(text["gb_weight"], (106.0, 21.0, 118.0, 28.0))
-    block.label(text["gb_scale"], (118.0, 21.0, 130.0, 28.0))
+    block.label(text["gb_stage"], (80.0, 21.0, 106.0, 28.0), row="others")
+    block.label(text["gb_weight"], (106.0, 21.0, 118.0, 28.0), row="others")
+    block.label(text["gb_scale"], (118.0, 21.0, 130.0, 28.0), row="others")
     block.text(fields.scale, (118.0, 7.0, 130.0, 21.0), VALUE_SIZE, lines=SCALE_LINES)
     block.label(text["gb_sheets"].format(number=fields.sheet, count=fields.sheets), (80.0, 0.0, 130.0, 7.0))
     block.text(fields.organization, (130.0, 38.0, 180.0, 56.0), VALUE_SIZE, lines=2)
@@ -491,12 +515,12 @@ def _iso(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> No
     )
     for key, (x0, y0, x1, y1), value in cells:
         block.corner_label(text[key], (x0, y0, x1, y1))
-        block.text(value, (x0, y0, x1, y1 - CORNER_LABEL_ROOM), 3.0,
+        block.text(value, (x0, y0, x1, y1 - CORNER_LABEL_ROOM), KIND_SIZE,
                    margin=NAME_MARGIN if key == "iso_document_type" else None)
     block.corner_label(text["iso_legal_owner"], (0.0, 0.0, 60.0, 30.0))
     block.text(fields.organization, (0.0, 0.0, 60.0, 30.0 - CORNER_LABEL_ROOM), VALUE_SIZE, lines=3)
     block.corner_label(text["iso_title"], (60.0, 10.0, 180.0, 30.0))
-    block.text(fields.title, (60.0, 10.0, 180.0, 30.0 - CORNER_LABEL_ROOM), 5.0, weight="bold", lines=3,
+    block.text(fields.title, (60.0, 10.0, 180.0, 30.0 - CORNER_LABEL_ROOM), NAME_SIZE, weight="bold", lines=3,
                margin=NAME_MARGIN)
 
 
@@ -504,8 +528,8 @@ def _name(block: _Block, fields: TitleBlockFields, box: tuple[float, float, floa
     """The drawing's name: the scene's title over the kind of drawing, each fitted into its share of ``box``."""
     x0, y0, x1, y1 = box
     split = y0 + 0.32 * (y1 - y0)
-    block.text(fields.title, (x0, split, x1, y1), 4.0, weight="bold", lines=4, margin=NAME_MARGIN)
-    block.text(fields.drawing, (x0, y0, x1, split), 3.0, lines=2, margin=NAME_MARGIN)
+    block.text(fields.title, (x0, split, x1, y1), NAME_SIZE, weight="bold", lines=4, margin=NAME_MARGIN)
+    block.text(fields.drawing, (x0, y0, x1, split), KIND_SIZE, lines=2, margin=NAME_MARGIN)
 
 
 # Fitting a text into a box.
@@ -621,8 +645,10 @@ def _filled(tokens: Sequence[tuple[str, bool]], word: Sequence[float], joint: Se
 
 def fitted(value: str, box: tuple[float, float, float, float], size: float, anchor: str = "middle",
            weight: str = "normal", lines: int = 1, padding: float = PADDING, margin: float | None = None) -> list[Text]:
-    """``value`` in at most ``lines`` lines, centred in ``box`` (x0, y0, x1, y1), set smaller when it must;
-    ``padding`` mm from the box's lines, ``margin`` (if given) from its sides."""
+    """``value`` in at most ``lines`` lines, centred in ``box`` (x0, y0, x1, y1), set smaller when it must: at the
+    largest height of the standard series (:func:`graphplan.render.lettering.at_most`) up to ``size`` that it fits
+    at, in as few lines as take that height; under the series' smallest, as large as it fits.  ``padding`` mm from
+    the box's lines, ``margin`` (if given) from its sides."""
     if not value.strip():
         return []
     x0, y0, x1, y1 = box
@@ -636,7 +662,8 @@ def fitted(value: str, box: tuple[float, float, float, float], size: float, anch
             widest = max(text_width(part, size, weight) for part in parts)
             # The block of n lines is (n - 1) pitches plus one line's extent (1.45 cap heights) high.
             tall = ((len(parts) - 1) * LINE_PITCH + 1.45) * size
-            fit = min(size, size * width / widest, size * height / tall)
+            # Set smaller, it steps down the standard series, as a draftsman letters a field too small for it.
+            fit = lettering.at_most(min(size, size * width / widest, size * height / tall))
             if best is None or fit > best[0] + 1e-9:
                 best = (fit, parts)
         if best[0] >= size:
