@@ -287,10 +287,24 @@ def pdf_reads(pdf: Path | bytes, note: str) -> list[str]:
         document.close()
     # List items' bullets are read after their page's text, and a word broken at a hyphen has lost it.
     squeeze = lambda text: re.sub(r"[\s\u00ad\ufffe•-]+", "", text)
-    text = squeeze("".join(re.sub(r"\d+\s*$", "", page) for page in pages))
+    pages = [squeeze(re.sub(r"\d+\s*$", "", page)) for page in pages]
+    text = "".join(pages)
+
+    def read_across_a_page_break(piece: str) -> bool:
+        # A figure's words are read after the text of its page, so a paragraph going on over the next page is read
+        # with the figure's words between its two parts: its head must end a page's text flow before them, and its
+        # tail begin the next page.
+        for page, after in zip(pages, pages[1:]):
+            for cut in range(1, len(piece)):
+                if after.startswith(piece[cut:]):
+                    if piece[:cut] in page:
+                        return True
+                    break
+        return False
+
     wanted = [block[-1] for block in markdown_blocks(note) if block[0] in ("h", "p")]
     wanted += [cell for _, rows in markdown_tables(note) for row in rows for cell in row]
-    return [piece for piece in wanted if squeeze(piece) not in text]
+    return [piece for piece in wanted if squeeze(piece) not in text and not read_across_a_page_break(squeeze(piece))]
 
 
 def embedded_fonts(pdf: bytes) -> set[str]:
