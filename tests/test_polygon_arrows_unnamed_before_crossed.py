@@ -252,14 +252,15 @@ def test_the_caption_is_read_as_written():
 # as their own (by position, polygon, and the arrow the name reads as); all were so before the check came in.  The
 # double rocker's R14 at 5 and the Stephenson six-bar's R16 at 9 stand 0.2 mm from their tangential components and
 # 1.5 mm from their own lines, in a sliver between the two too narrow for the name, the other side across arrows not
-# side by side with them; the class III triad's R14 at 2, an arrow 1.5 mm long, stands in a knot of short arrows by
-# R63; the Stephenson's R43 at 9, a short side in the corner of G4 and Fu4, touches Fu4's tail; the crank-rocker
-# starter's R43 at 11, a short side in the corner where R23n and R14n meet, stands nearer R23n's line than its own.
+# side by side with them; the crank-rocker starter's R43 at 11, a short side in the corner where R23n and R14n meet,
+# stands nearer R23n's line than its own.  With the names at 3.5 mm (the standard series), not 3.2, the class III
+# triad's R14 at 2 (an arrow 1.5 mm long in a knot of short arrows by R63) and the Stephenson's R43 at 9 (a short side
+# in the corner of G4 and Fu4) are set on leaders that read as naming their own: the other names, larger, left the
+# placer's first spots.
 STILL_MISREAD = {
     "new:crank-rocker": {"11 polygon-II-3-4: R43 as R23n"},
     "double_rocker_swing": {"5 polygon-II-3-4: R14 as R14tau"},
-    "stephenson_six_bar": {"9 polygon-II-5-6: R16 as R16tau", "9 polygon-II-3-4: R43 as Fu4"},
-    "triad_class_iii": {"2 polygon-III-3-4-5-6: R14 as R63"},
+    "stephenson_six_bar": {"9 polygon-II-5-6: R16 as R16tau"},
 }
 
 
