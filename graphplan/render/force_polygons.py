@@ -428,8 +428,8 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
     if not whole_reaction(anchor.text):
         # Where no short leader reaches out of a sliver, a leader that crosses nothing may be longer, and the name
         # may stand off the side obliquely or by its ends: the offset slider-crank's R23n at position 10, led 10 mm
-        # across R23 and R14's line at b76b78f, stands right of its head, beyond G3's name, which stands square to
-        # the side (left to the caption, it made that force sheet too tall to share an A1 sheet with its lever).
+        # across R23 and R14's line at b76b78f, stood so right of its head, beyond G3's name, at 3.2 mm (at 3.5 mm
+        # the gap there is too narrow, and the caption tells it).
         short_leader = next(_sliver_spots(anchor, drawn, texts, leaders, SLIVER_LEADER_MM), None)
         if short_leader is not None:
             return short_leader
