@@ -11,6 +11,7 @@ Word document by python-docx, the PDF by PDFium; note.md by markdown-it's token 
 from __future__ import annotations
 
 import io
+import itertools
 import json
 import re
 import zipfile
@@ -260,6 +261,22 @@ def test_the_lever_s_moments_about_its_pole_and_a_travel_along_a_guide_take_thei
     subscripted_everywhere(files, "s", "E")
 
 
+@pytest.mark.parametrize("locale, speeds", [("en", ("s", "N")), ("ru", ("0", "н"))])
+def test_the_initial_data_s_journal_radius_and_motor_speeds_take_their_index(locale, speeds):
+    """The initial data's table wrote rO beside fO subscripted, and the motor's ns, nN (n0, nн) flat."""
+    files = written("shaper", locale, ("note",))
+    assert "| rO |" in files["note.md"]
+    cells = "\n".join("".join(f"_{{{run.text}}}" if run.font.subscript else run.text
+                               for paragraph in cell.paragraphs for run in paragraph.runs)
+                       for table in docx.Document(io.BytesIO(files["note.docx"])).tables
+                       for row in table.rows for cell in row.cells)
+    for base, index, after in [("r", "O", ""), *(("n", index, " = ") for index in speeds)]:
+        assert f"{base}{index}{after}" in files["note.md"]
+        assert f"{base}<sub>{index}</sub>{after}" in files["note.html"]
+        assert f"{base}\\textsubscript{{{index}}}{after}" in files["note.tex"]
+        assert f"{base}_{{{index}}}{after}" in cells
+
+
 def test_a_rocker_s_angle_takes_its_link_s_index():
     files = written("fixtures/ratchet_crank_rocker.toml", "ru", ("note",))
     assert "ψ4" in files["note.md"]
@@ -294,7 +311,7 @@ def pdf_reads(pdf: Path | bytes, note: str) -> list[str]:
         # A figure's words are read after the text of its page, so a paragraph going on over the next page is read
         # with the figure's words between its two parts: its head must end a page's text flow before them, and its
         # tail begin the next page.
-        for page, after in zip(pages, pages[1:]):
+        for page, after in itertools.pairwise(pages):
             for cut in range(1, len(piece)):
                 if after.startswith(piece[cut:]):
                     if piece[:cut] in page:

@@ -30,7 +30,7 @@ _ROTOR = f"\\d{{1,3}}|[{CAPITALS}][A-Za-z0-9]{{0,2}}|[bi]"
 # Every character a symbol below begins with: asked first, so that the shapes are tried only where one may begin (the
 # note's and the tables' texts were scanned nine times slower, every shape tried at every character).  A shape added
 # with another first character adds it here (tests/test_run_speed_paths.py holds the symbols found to the shapes').
-FIRST_CHARACTERS = "VaslωεψμRFMGJmIpnPφXfρΔAWv(z"
+FIRST_CHARACTERS = "VaslωεψμRFMGJmIpnPφXfρΔAWv(zr"
 
 # base, index, component: the symbols of the plan method and of the force analysis.
 SYMBOL = re.compile(
@@ -56,12 +56,17 @@ SYMBOL = re.compile(
     # The crank's speed in rev/min where the scene gives it: the cell of n2 and its conversion πn2/30.  Only there:
     # elsewhere n3 is the plans' letter for a normal component's end (πn3, через n3), which the drawings write flat.
     r"|(?P<base26>n)(?P<index26>\d+)(?=/30|$)"
+    # A motor's synchronous and rated speeds in rev/min in the initial data (ns, nN; n0, nн), given as values: n0
+    # only so, where n3 written flat is the plans' letter.
+    r"|(?P<base33>n)(?P<index33>[sNн0])(?= = )"
     r"|(?P<base10>P)(?P<index10>[LH])"
     # The strokes' angles of the crank (φw, φi; φр.х, φх.х), the reactions of the linear system and of the
     # polygons (Rсист, Rпл), an error's two values (Xа, Xпл); the friction in a pair: its coefficient fE (reduced
     # in a V-guide, f′E), its circle's radius ρO, its force Ff16 and moment Mf12 (above).
     r"|(?P<base18>φ)(?P<index18>[wi]|р\.х|х\.х)|(?P<base19>R)(?P<index19>сист|пл)|(?P<base20>X)(?P<index20>а|пл)"
     rf"|(?P<base21>f′?|ρ)(?P<index21>{_POINTS}|\d+)"
+    # A journal's radius in a pair (rO) beside its f and ρ in the initial data.
+    rf"|(?P<base32>r)(?P<index32>{_POINTS})"
     # The machine's dynamics: ΔWmax, Ad and Ar (in Chinese Wd and Wr), ωm, ωmax and ωmin, vS of a reduction; in
     # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).  The efficiency over the cycle's
     # works: Au, Ab (the driver's, with friction), Af (Wr, Wb, Wf; Aпс, Aдв, Aтр).
