@@ -120,13 +120,15 @@ def test_the_phi_axes_and_the_je_axes_are_numbered_alike(dynamics_svg):
 
 
 def _je_numbers(group: ElementTree.Element) -> list[tuple[float, float]]:
-    """(Je, x on the paper) of the Je axis's numbers: lettered as the axis's name, on either side of it."""
+    """(Je, x on the paper) of the Je axis's numbers: lettered at the axes' numbers' height (a size under the axis's
+    name, and over the plan positions' numbers by the energy–mass diagram's curve), on either side of it."""
     texts = list(group.iter(f"{SVG}text"))
     name = next(t for t in texts if _words(t).startswith("Je,"))
     axis_y = float(name.get("y"))
+    number_size = dynamics.NUMBER * FONT_SIZE_PER_CAP
     return sorted((_value(_words(t)), float(t.get("x"))) for t in texts
                   if NUMBER.fullmatch(_words(t)) and _value(_words(t)) > 0
-                  and t.get("font-size") == name.get("font-size")
+                  and abs(float(t.get("font-size")) - number_size) < 0.002
                   and abs(float(t.get("y")) - axis_y) < 6 and float(t.get("x")) < float(name.get("x")))
 
 

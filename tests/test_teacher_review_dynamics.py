@@ -597,20 +597,23 @@ def test_the_je_numbers_of_the_energy_mass_diagram_stand_clear_of_its_tangents_a
     black = _paths(group, "black")
     je_axis = max((p for p in black if len(p) == 2 and abs(p[0, 1] - p[1, 1]) < 1e-9), key=lambda p: p[1, 0] - p[0, 0])
     axis_y = je_axis[0, 1]
-    axis_name = next(t for t in group.iter(f"{SVG}text") if "".join(t.itertext()) == "Je, kg·m²")
-    # The axis's own numbers, lettered as its name is; the plan positions' numbers are smaller.
+    origin = je_axis[0, 0]
+    # The axis's own numbers, lettered as the ΔT axis's numbers left of the ordinate are (a size under the axes'
+    # names); the plan positions' numbers by their points on the curve are smaller still.
+    ordinate_numbers = {t.get("font-size") for t in group.iter(f"{SVG}text")
+                        if re.fullmatch(r"−?\d+(\.\d+)?", "".join(t.itertext())) and float(t.get("x")) < origin}
+    assert len(ordinate_numbers) == 1, ordinate_numbers
     numbers = [t for t in group.iter(f"{SVG}text") if re.fullmatch(r"\d+(\.\d+)?", "".join(t.itertext()))
                and float("".join(t.itertext())) > 0 and abs(float(t.get("y")) - axis_y) < 8
-               and t.get("font-size") == axis_name.get("font-size")]
+               and t.get("font-size") in ordinate_numbers]
     written = [float("".join(t.itertext())) for t in numbers]
     scales = re.fullmatch(r"μJ = " + NUMBER + r" kg·m²/mm, μT = " + NUMBER + " J/mm",
                           next(text for text in _texts(group) if text.startswith("μJ")))
-    origin = je_axis[0, 0]
     ticks = sorted(round((p[0, 0] - origin) * _number(scales[1]), 9) for p in black
                    if len(p) == 2 and abs(p[0, 0] - p[1, 0]) < 1e-9 and min(p[:, 1]) < axis_y < max(p[:, 1]))
     # Every tick kept, at a round step, and numbered each, or every other where the numbers would stand closer than a
-    # letter (tests/test_dynamics_labels_clear.py): every tick at a multiple of the numbers' step has its number.  The
-    # compressor's, which every other tick left one number, is ticked at a coarser step, 0.05 and 0.1.
+    # letter (tests/test_dynamics_labels_clear.py): every tick at a multiple of the numbers' step has its number.  (The
+    # compressor's, at 0.025 apart, stand a letter apart at 2.5 mm, each numbered, 0.05 among them.)
     assert ticks == pytest.approx([ticks[0] * k for k in range(1, len(ticks) + 1)]) and len(ticks) >= 2
     every = round(min(written) / ticks[0])
     numbered = [tick for k, tick in enumerate(ticks, 1) if k % every == 0]
