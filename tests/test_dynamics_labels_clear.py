@@ -25,6 +25,7 @@ from graphplan.starters import starter
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"
 COMPRESSOR = ROOT / "tests" / "scenes" / "compressor_indicator_diagram.toml"
+TRIAD = ROOT / "tests" / "scenes" / "triad_slider_short_tangential.toml"
 NUMBER = re.compile(r"−?\d+(?:[.,]\d+)?")
 # The colours of the speeds' ticks and ordinates (and the tangents) and of the grid.
 RED = "#b22222"
@@ -139,6 +140,32 @@ def test_the_speed_extremes_keep_off_the_axes_ticks_grid_and_curve(drawings, kin
     for name, words, _, shape in _texts(svg):
         if name == "energy" and words in ("ωmax", "ωmin"):
             assert min(shape.distance(line) for line in lines) >= 0.3, f"{kind} {locale}: {words} on a line"
+
+
+@pytest.mark.parametrize("kind", ["triad", "compressor", "shaper"])
+def test_the_je_numbers_of_the_energy_mass_diagram_keep_off_the_ink_of_its_curve_and_tangents(tmp_path, kind):
+    """A line is drawn as wide as its stroke: clear of the curve's middle by 0.24 mm, the triad's 0.02, centred under
+    its tick, had the curve's half-millimetre stroke through the foot of its first figure.  Each Je number stands with
+    paper between it and the ink of the curve and of the tangents (each path widened by half its stroke), a tangent
+    broken under a number included."""
+    scene = _starter(tmp_path, "shaper") if kind == "shaper" else {"triad": TRIAD, "compressor": COMPRESSOR}[kind]
+    svg = _run(tmp_path, scene, "dynamics", "en") / "dynamics.svg"
+    group = next(g for g in ElementTree.parse(svg).getroot().iter(f"{SVG}g") if g.get("id") == "energy-mass")
+    paths = [(path.get("stroke"), float(path.get("stroke-width")),
+              LineString([tuple(map(float, pair)) for pair in re.findall(r"([-\d.]+),([-\d.]+)", path.get("d"))]))
+             for path in group.iter(f"{SVG}path") if path.get("fill") == "none"]
+    axis = max((line for stroke, _, line in paths if stroke == "black" and len(line.coords) == 2
+                and line.coords[0][1] == line.coords[1][1]), key=lambda line: line.length)
+    (origin, axis_y), _ = axis.coords
+    curve = max((line for stroke, _, line in paths if stroke == "black"), key=lambda line: len(line.coords))
+    inks = [line.buffer(width / 2) for stroke, width, line in paths if stroke == RED or line is curve]
+    # The Je axis's numbers: lettered as the axes' numbers, by the axis and right of the ΔT axis, whose own numbers
+    # stand left of it.
+    numbers = [(words, shape) for name, words, cap, shape in _texts(svg) if name == "energy-mass"
+               and _is_axis_number(words, cap) and shape.bounds[0] > origin and abs(shape.centroid.y - axis_y) < 8]
+    assert len(numbers) >= 2, numbers
+    for words, shape in numbers:
+        assert min(shape.distance(ink) for ink in inks) >= 0.2, f"{kind}: Je's {words} in a line's ink"
 
 
 def test_the_flywheels_omega_min_at_nought_is_not_set_beside_the_energy_axiss_nought(drawings):

@@ -106,7 +106,8 @@ SPEED_TICK_MM = 2.0
 POSITION_DOT_MM = 0.5
 POSITION_NUMBER = lettering.CURVE_NUMBER
 # How far a letter's tail (ψ, the g of "kg") hangs under its baseline, in cap heights, and the gap kept between a
-# tangent's ψ and the Je axis with its name (mm).
+# tangent's ψ and the Je axis with its name (mm), which the Je axis's numbers keep off the energy–mass diagram's lines
+# and ωmax and ωmin off ΔT(φ)'s: the curve's stroke, half a millimetre wide, and paper beyond it.
 DESCENT = 0.3
 AXIS_WORDS_GAP_MM = 0.6
 # How far a diagram's heading stands over its scale's line (mm): the scale's capitals, and paper between them and the
@@ -601,11 +602,17 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     near = NUMBER + TICK_MM + 2.0
     every_tick = _inertia_ticks(model, scales)
     ticks = [(value, at) for value, at, numbered in every_tick if numbered]
+
+    def struck(number: Text, shapes: Sequence[BaseGeometry]) -> bool:
+        # The lines are their middles: a number clear of the curve's middle alone had its half-millimetre stroke
+        # through the foot of its first figure (the triad's 0.02, 0.24 mm off, lettered 2.5 mm high).
+        ink = _ink(number).buffer(AXIS_WORDS_GAP_MM, join_style="mitre")
+        return any(ink.intersects(shape) for shape in shapes)
+
     sides = []
     for letter_y, crowd in ((TICK_MM + 1.0, (ys > 0) & (ys < near)), (-TICK_MM - 1.0 - NUMBER, (ys < 0) & (ys > -near))):
-        struck = sum(any(_ink(Text((at, letter_y), short(value), NUMBER, "middle")).intersects(shape)
-                         for shape in drawn) for value, at in ticks)
-        sides.append((struck, int(np.count_nonzero(crowd)), letter_y))
+        struck_here = sum(struck(Text((at, letter_y), short(value), NUMBER, "middle"), drawn) for value, at in ticks)
+        sides.append((struck_here, int(np.count_nonzero(crowd)), letter_y))
     (_, _, letter_y), (_, _, other_y) = sorted(sides)
     items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"],
                            _ordinate_step(model.energy))
@@ -626,8 +633,8 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
         candidates = [Text((x, y), short(value), NUMBER, anchor) for x, y, anchor in spots]
         number = None
         for shapes, breaking in ((drawn, None), (beside_the_tangents, over_tangents), (beside_the_lines, over_lines)):
-            number = next((text for text in candidates
-                           if not any(_ink(text).intersects(shape) for shape in (*shapes, *others))), None)
+            number = next((text for text in candidates if not struck(text, shapes)
+                           and not any(_ink(text).intersects(shape) for shape in others)), None)
             if number is not None:
                 if breaking is not None:
                     breaking.append(number)
