@@ -53,7 +53,7 @@ from .force_marks import (
     wrapped,
 )
 from .force_rows import CAPTION_WIDTH_MM, Drawing
-from .labels import LEADER_WIDTH, Anchor, obstacles_of, open_direction, text_box
+from .labels import LABEL_GAP_MM, LEADER_WIDTH, LED_SHARES, Anchor, obstacles_of, open_direction, text_box
 from .numerals import significant
 from .plans import ZERO_MM, too_short_lines
 from .plans import _coincident as coincident_letters
@@ -359,8 +359,15 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             # among the loads at 3.5 mm) has one of its loads given under the lever, as a name lying on a line is.
             pressed = [group for group, anchor, placed in zip(groups, points, labels.texts[len(loads):], strict=False)
                        if label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
-            lying = [anchor for anchor in loads if anchor.text != shown("Fb") and load_points[anchor.text] not in taken
-                     and any(load_points[anchor.text] in group for group in pressed)][:1]
+            free = [anchor for anchor in loads if anchor.text != shown("Fb") and load_points[anchor.text] not in taken]
+            lying = [anchor for anchor in free if any(load_points[anchor.text] in group for group in pressed)][:1]
+            if pressed and not lying:
+                # Its own arrows already keep one unnamed: the name standing by its dot, in the room its letter needs,
+                # is given under the lever instead (G6 by s5 on the class III triad's lever of position 8, where s5's
+                # letter, Fu5 under the lever, was led across G4's arrow).
+                lying = _crowding_names([ShapelyPoint(_xy(mm(group[0]))) for group in pressed],
+                                        [(anchor, placed) for anchor, placed in zip(loads, labels.texts)
+                                         if anchor in free])[:1]
         if not lying:
             break
         unnamed.append(lying[0])
@@ -438,6 +445,18 @@ def _by_another_head(anchor: Anchor, text: Text, heads: Sequence[tuple[float, fl
         if apart < own - OTHER_HEAD_MARGIN_MM and (not led or apart < LED_NAME_HEAD_CLEAR_MM):
             return True
     return False
+
+
+# A name whose box stands this near a point's dot (mm) takes the room of that point's letter: the letter stands beside
+# its dot or on a short leader, its box within the placer's led rings of it.
+LETTER_ROOM_MM = LABEL_GAP_MM + LED_SHARES[-1] * POINT_SIZE
+
+
+def _crowding_names(dots: Sequence[ShapelyPoint], names: Sequence[tuple[Anchor, Text]]) -> list[Anchor]:
+    """The anchors of the placed load ``names`` that stand in the room of a point's letter at one of ``dots``, the
+    nearest first."""
+    apart = [(min(text_box(placed).distance(dot) for dot in dots), index) for index, (_, placed) in enumerate(names)]
+    return [names[index][0] for distance, index in sorted(apart) if distance < LETTER_ROOM_MM]
 
 
 def _percent(value: float) -> str:
