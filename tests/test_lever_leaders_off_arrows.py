@@ -76,6 +76,21 @@ def test_the_shafts_are_told_among_the_obstacles_in_their_order():
         index for index, shape in enumerate(shapes) if shape.geom_type == "LineString" and shape.equals(shaft)]
 
 
+def test_the_shafts_inked_are_as_wide_as_drawn_and_nothing_else_grows():
+    """A shaft inked is its stroke wide: a letter 0.17 mm off a 0.45 mm shaft's middle (the knee press's d by F6) is on
+    its ink, not on its middle; a thin line and the head stay as they are."""
+    arrow = Arrow((0.0, 0.0), (20.0, 0.0), Stroke(0.45), 3.0)
+    line = Polyline(((0.0, 5.0), (20.0, 5.0)), Stroke(0.6))
+    plain, shafts = obstacles_and_shafts([line, arrow])
+    inked, inked_shafts = obstacles_and_shafts([line, arrow], shafts_inked=True)
+    assert inked_shafts == shafts
+    letter = Polygon([(5.0, 0.17), (8.0, 0.17), (8.0, 3.67), (5.0, 3.67)])
+    assert not letter.intersects(plain[1]) and letter.intersects(inked[1])
+    clear = Polygon([(5.0, 0.23), (8.0, 0.23), (8.0, 3.73), (5.0, 3.73)])
+    assert not clear.intersects(inked[1])  # beyond the half of 0.45 mm
+    assert inked[0].equals(plain[0]) and inked[2].equals(plain[2])
+
+
 @pytest.mark.parametrize(("fixture", "number"), LEVERS)
 def test_no_leader_on_the_lever_crosses_a_load_s_arrow(fixture, number):
     layers = lever_layers(fixture, number)

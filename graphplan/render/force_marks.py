@@ -239,9 +239,11 @@ def whole_reaction(name: str) -> bool:
 
 
 def letters_placed(anchors: Sequence[Anchor], figure: Sequence[Primitive],
-              reach_farther: bool | Sequence[bool] = True, unnamed: Sequence[Anchor] = ()) -> Placement:
+              reach_farther: bool | Sequence[bool] = True, unnamed: Sequence[Anchor] = (),
+              shafts_inked: bool = False) -> Placement:
     """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot, and of the spots of the
-    ``unnamed`` (a lever's arrows whose names are given under it).
+    ``unnamed`` (a lever's arrows whose names are given under it); ``shafts_inked``, clear of the arrows' shafts as
+    wide as they are drawn, not their middles alone.
 
     A label covering another one's anchor (the tail of a moment's arc)
     would leave that one no room beside it, so the anchors count as points.
@@ -251,7 +253,7 @@ def letters_placed(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     centres = np.reshape([anchor.at for anchor in [*anchors, *unnamed]], (-1, 2))   # (0, 2) with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
     # A leader across an arrow reads as part of it, or as naming its load: the placer costs it as two leaders crossing.
-    obstacles, shafts = obstacles_and_shafts(figure)
+    obstacles, shafts = obstacles_and_shafts(figure, shafts_inked)
     return remembered(place_labels, anchors, obstacles + spots, reach_farther=reach_farther, shafts=shafts)
 
 

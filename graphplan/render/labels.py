@@ -72,19 +72,22 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     return obstacles_and_shafts(items)[0]
 
 
-def obstacles_and_shafts(items: Sequence[Primitive]) -> tuple[list[BaseGeometry], list[bool]]:
+def obstacles_and_shafts(items: Sequence[Primitive], shafts_inked: bool = False) -> tuple[list[BaseGeometry], list[bool]]:
     """:func:`obstacles_of`'s shapes of ``items`` and, shape by shape, whether it is an arrow's shaft (``place_labels``'
-    ``shafts``): one pass, so that the two lists keep one order."""
+    ``shafts``): one pass, so that the two lists keep one order.  ``shafts_inked``: each shaft as wide as its stroke
+    draws it, not its middle alone."""
     # Made by shapely's functions, the same shapes as its classes make, in C, and each kind of shape for all the items
     # in one call: a sheet's drawings have a thousand, and a call an item took longer than the shapes' making.
     kinds: list[tuple[str, int]] = []  # each shape's kind and its number among the shapes of that kind
     made: dict[str, list] = {"line": [], "polygon": [], "circle": [], "box": []}
     shafts: list[bool] = []
+    half_widths: list[float] = []  # a shaft's stroke, halved; nought for any other shape
 
-    def add(kind: str, what, shaft: bool = False) -> None:
+    def add(kind: str, what, shaft: bool = False, width: float = 0.0) -> None:
         kinds.append((kind, len(made[kind])))
         made[kind].append(what)
         shafts.append(shaft)
+        half_widths.append(width / 2)
 
     for item in items:
         if isinstance(item, Polyline) and item.closed and item.fill and len(item.points) >= 3:
@@ -93,14 +96,20 @@ def obstacles_and_shafts(items: Sequence[Primitive]) -> tuple[list[BaseGeometry]
         elif isinstance(item, Polyline) and len(item.points) >= 2:
             add("line", item.points + ((item.points[0],) if item.closed else ()))
         elif isinstance(item, Arrow):
-            add("line", (item.start, item.end), shaft=True)
+            add("line", (item.start, item.end), shaft=True, width=item.stroke.width)
             add("polygon", item.tip().points)
         elif isinstance(item, Circle):
             add("circle", item)
         elif isinstance(item, Text):
             add("box", text_extent(item))
     shapes = {kind: _shapes(kind, given) for kind, given in made.items() if given}
-    return [shapes[kind][number] for kind, number in kinds], shafts
+    found = [shapes[kind][number] for kind, number in kinds]
+    if shafts_inked and (wide := [index for index, half in enumerate(half_widths) if half > 0]):
+        grown = shapely.buffer(np.array([found[index] for index in wide], dtype=object),
+                               [half_widths[index] for index in wide])
+        for index, shape in zip(wide, grown, strict=True):
+            found[index] = shape
+    return found, shafts
 
 
 def _shapes(kind: str, given: list) -> np.ndarray:
