@@ -32,18 +32,16 @@ def _collinear(one: LineString, other: LineString) -> bool:
     return all(abs((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)) < 1e-3 * one.length for x, y in other.coords)
 
 
-def stroked_shapes(root: ET.Element, skipped: Collection[str] = ("leaders",),
-                   thinner_than: float = math.inf) -> list[shapely.Geometry]:
+def stroked_shapes(root: ET.Element, skipped: Collection[str] = ("leaders",)) -> list[shapely.Geometry]:
     """Every stroked path and circle of an SVG drawing outside the groups whose ids are ``skipped`` (the leaders: a
-    label's own leader ends at it), each widened by half its stroke, as the ink a label must keep clear of; only
-    those of strokes thinner than ``thinner_than`` (mm) where that is given."""
+    label's own leader ends at it), each widened by half its stroke, as the ink a label must keep clear of."""
     shapes = []
     for group in root.iter(f"{SVG}g"):
         if group.get("id") in skipped:
             continue
         for item in group:
             width = float(item.get("stroke-width", "0"))
-            if item.get("stroke", "none") == "none" or width >= thinner_than:
+            if item.get("stroke", "none") == "none":
                 continue
             if item.tag == f"{SVG}path":
                 numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]

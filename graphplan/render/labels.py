@@ -72,6 +72,19 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     return obstacles_and_shafts(items)[0]
 
 
+def ink_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
+    """:func:`obstacles_of`'s shapes with each line as wide as its stroke draws it: for what is set clear of a few
+    bold lines (a position's number round the crank's circle), where their middles alone let a number touch a 1 mm
+    link's ink."""
+    shapes: list[BaseGeometry] = []
+    for item in items:
+        found = obstacles_of([item])
+        if isinstance(item, Polyline) and not (item.closed and item.fill):
+            found = [shapely.buffer(shape, item.stroke.width / 2) for shape in found]
+        shapes += found
+    return shapes
+
+
 def obstacles_and_shafts(items: Sequence[Primitive], shafts_inked: bool = False) -> tuple[list[BaseGeometry], list[bool]]:
     """:func:`obstacles_of`'s shapes of ``items`` and, shape by shape, whether it is an arrow's shaft (``place_labels``'
     ``shafts``): one pass, so that the two lists keep one order.  ``shafts_inked``: each shaft as wide as its stroke

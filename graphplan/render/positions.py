@@ -32,6 +32,7 @@ from .labels import (
     Anchor,
     Placement,
     broken_under,
+    ink_of,
     obstacles_of,
     place_labels,
     remembered,
@@ -157,7 +158,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
         # the frame's pivots too: round a crank drawn a few millimetres long they fell on its pivot's triangle.
         primed = _extreme_anchors(plan, paper, names=False)
         numbers, number_leaders, crowded = _numbers_round_the_circle(
-            plan, paper, obstacles_of(loaded + bold + dimension + frame_pivots(plan.mechanism, paper)),
+            plan, paper, ink_of(loaded + bold + dimension) + obstacles_of(frame_pivots(plan.mechanism, paper)),
             [anchor.at for anchor in primed])
         # A number that cannot stand on its radius at a pin lettered with primes is lettered with those letters, round
         # the pin: set aside first on its own, it took the nearest spot beside the pin and left its letters the spots
@@ -458,7 +459,10 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[Base
                      if not any(text_box(text).intersects(line) for line in bold)), None)
         leader = None
         if text is None:
-            if with_its_letters(item):
+            # Numbered one in every few, one that cannot stand on its radius is left out sooner than set aside on a
+            # leader into the room the others need: round a crank drawn a millimetre long the 9, set below the
+            # pivot off a link's ink, left the 5′ no spot but the pivot's triangle.
+            if step > drawing_step or with_its_letters(item):
                 continue
             text, leader = _set_aside(item, centre, boxes, bold)
         spaced = spaced_box(text, LABEL_SPACING / 2)

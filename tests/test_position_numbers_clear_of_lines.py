@@ -1,0 +1,44 @@
+"""A position's number round the crank's circle on the plan of positions stands on no line: the thin ones (the other
+positions' outlines, the points' paths) are broken under it, as a draftsman breaks a thin line under a number (ГОСТ
+2.307), and the bold ones it is set clear of by their ink, not their middles.
+
+The numbers were set clear of the bold lines' middles alone, among the thin ones: the Scotch yoke's 10 and 4 stood
+struck through by the ends of its slot at those positions, the crank-rocker's 5 and 7 on the dashed path of B and
+the outlines of the rocker, and the shaper's 12 on the ink of its 1 mm crank.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+import shapely
+from drawn_lines import stroked_shapes
+from sheet_texts import box, texts
+
+from graphplan.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def positions_plan(tmp_path: Path, scene: str) -> str:
+    if scene.startswith("new:"):
+        path = tmp_path / "scene.toml"
+        assert main(["new", scene.removeprefix("new:"), "--out", str(path)]) == 0
+    else:
+        path = ROOT / "fixtures" / f"{scene}.toml"
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
+    return (tmp_path / "out" / "positions.svg").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("scene", ["scotch_yoke", "new:crank-rocker", "ratchet_crank_rocker", "tangent_mechanism_prp",
+                                   "new:shaper", "shaper_six_bar"])
+def test_no_position_number_stands_on_a_line(tmp_path, scene) -> None:
+    source = positions_plan(tmp_path, scene)
+    ink = shapely.STRtree(stroked_shapes(ET.fromstring(source), ("leaders", "labels", "caption")))
+    numbers = [entry for entry in texts(source) if re.fullmatch(r"\d+", entry[4])]
+    assert len(numbers) >= 12, "the plan numbers its positions round the crank's circle"
+    struck = [entry[4] for entry in numbers if len(ink.query(shapely.box(*box(*entry)), predicate="intersects"))]
+    assert struck == []
