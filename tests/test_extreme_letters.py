@@ -11,7 +11,6 @@ import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-import pytest
 import shapely
 from drawn_lines import stroked_shapes
 from scipy.optimize import brentq
@@ -157,10 +156,6 @@ def _directions(corners: tuple[float, float, float, float], at: tuple[float, flo
     return middle + min(turns), middle + max(turns)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "letters 2.5 mm high (the standard series) on the plan of positions: the Scotch yoke's A′ stands 0.1 mm into the "
-    "ink of the 0.7 mm block round its top pin, the label placer keeping clear of a line's middle, not its ink; "
-    "placed clear of the ink, A′ took the spot behind the 7 (its leader under the number)"))
 def test_the_number_and_the_primed_letters_of_one_pin_stand_each_in_its_own_direction(tmp_path):
     """A number that cannot stand on its radius (the yoke's rod runs out along it) and two primed letters all name the
     Scotch yoke's top pin: each stands clear of the others and of the lines, near the pin, and in a direction of its

@@ -73,13 +73,14 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
 
 
 def ink_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
-    """:func:`obstacles_of`'s shapes with each line as wide as its stroke draws it: for what is set clear of a few
-    bold lines (a position's number round the crank's circle), where their middles alone let a number touch a 1 mm
-    link's ink."""
+    """:func:`obstacles_of`'s shapes with each line as wide as its stroke draws it, and a filled shape grown by half its
+    outline's stroke: for what is set clear of a few bold lines (a position's number round the crank's circle, the
+    plan of positions' letters), where their middles alone let a number touch a 1 mm link's ink, and the outline of
+    a 0.7 mm slider block drawn round a pin left a letter beside the pin 0.15 mm into its ink."""
     shapes: list[BaseGeometry] = []
     for item in items:
         found = obstacles_of([item])
-        if isinstance(item, Polyline) and not (item.closed and item.fill):
+        if isinstance(item, Polyline):
             found = [shapely.buffer(shape, item.stroke.width / 2) for shape in found]
         shapes += found
     return shapes
