@@ -77,40 +77,37 @@ def ink_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     outline's stroke: for what is set clear of a few bold lines (a position's number round the crank's circle, the
     plan of positions' letters), where their middles alone let a number touch a 1 mm link's ink, and the outline of
     a 0.7 mm slider block drawn round a pin left a letter beside the pin 0.15 mm into its ink."""
-    shapes: list[BaseGeometry] = []
-    for item in items:
-        found = obstacles_of([item])
-        if isinstance(item, Polyline):
-            found = [shapely.buffer(shape, item.stroke.width / 2) for shape in found]
-        shapes += found
-    return shapes
+    return obstacles_and_shafts(items, lines_inked=True)[0]
 
 
-def obstacles_and_shafts(items: Sequence[Primitive], shafts_inked: bool = False) -> tuple[list[BaseGeometry], list[bool]]:
+def obstacles_and_shafts(items: Sequence[Primitive], shafts_inked: bool = False,
+                         lines_inked: bool = False) -> tuple[list[BaseGeometry], list[bool]]:
     """:func:`obstacles_of`'s shapes of ``items`` and, shape by shape, whether it is an arrow's shaft (``place_labels``'
-    ``shafts``): one pass, so that the two lists keep one order.  ``shafts_inked``: each shaft as wide as its stroke
-    draws it, not its middle alone."""
+    ``shafts``): one pass, so that the two lists keep one order.  ``shafts_inked``: each arrow's shaft as wide as its
+    stroke draws it, not its middle alone; ``lines_inked``: each line and filled shape so (:func:`ink_of`)."""
     # Made by shapely's functions, the same shapes as its classes make, in C, and each kind of shape for all the items
     # in one call: a sheet's drawings have a thousand, and a call an item took longer than the shapes' making.
     kinds: list[tuple[str, int]] = []  # each shape's kind and its number among the shapes of that kind
     made: dict[str, list] = {"line": [], "polygon": [], "circle": [], "box": []}
     shafts: list[bool] = []
-    half_widths: list[float] = []  # a shaft's stroke, halved; nought for any other shape
+    # Each shape's stroke, halved, where it is grown to its ink: nought for any other shape.
+    half_widths: list[float] = []
 
-    def add(kind: str, what, shaft: bool = False, width: float = 0.0) -> None:
+    def add(kind: str, what, shaft: bool = False, inked_width: float = 0.0) -> None:
         kinds.append((kind, len(made[kind])))
         made[kind].append(what)
         shafts.append(shaft)
-        half_widths.append(width / 2)
+        half_widths.append(inked_width / 2)
 
     for item in items:
+        line_width = item.stroke.width if lines_inked and isinstance(item, Polyline) else 0.0
         if isinstance(item, Polyline) and item.closed and item.fill and len(item.points) >= 3:
             # A filled shape (a slider block, a pivot's triangle) hides what is written inside it.
-            add("polygon", item.points)
+            add("polygon", item.points, inked_width=line_width)
         elif isinstance(item, Polyline) and len(item.points) >= 2:
-            add("line", item.points + ((item.points[0],) if item.closed else ()))
+            add("line", item.points + ((item.points[0],) if item.closed else ()), inked_width=line_width)
         elif isinstance(item, Arrow):
-            add("line", (item.start, item.end), shaft=True, width=item.stroke.width)
+            add("line", (item.start, item.end), shaft=True, inked_width=item.stroke.width if shafts_inked else 0.0)
             add("polygon", item.tip().points)
         elif isinstance(item, Circle):
             add("circle", item)
@@ -118,7 +115,7 @@ def obstacles_and_shafts(items: Sequence[Primitive], shafts_inked: bool = False)
             add("box", text_extent(item))
     shapes = {kind: _shapes(kind, given) for kind, given in made.items() if given}
     found = [shapes[kind][number] for kind, number in kinds]
-    if shafts_inked and (wide := [index for index, half in enumerate(half_widths) if half > 0]):
+    if wide := [index for index, half in enumerate(half_widths) if half > 0]:
         grown = shapely.buffer(np.array([found[index] for index in wide], dtype=object),
                                [half_widths[index] for index in wide])
         for index, shape in zip(wide, grown, strict=True):

@@ -154,12 +154,16 @@ def layout(plan: PositionsPlan) -> list[Layer]:
         swing_labels += labels_of
         swing_texts += [item for item in items if travel.swing and isinstance(item, Text)]
     drawn = every + loaded + bold + frame + paths + dimension
+    # The bold lines the numbers and letters keep off by their ink: the extremes, the springs and cylinders, the
+    # travel's dimension.
+    bold_lines = loaded + bold + dimension
+    bold_ink = ink_of(bold_lines)
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
         # the frame's pivots too: round a crank drawn a few millimetres long they fell on its pivot's triangle.
         primed = _extreme_anchors(plan, paper, names=False)
         numbers, number_leaders, crowded = _numbers_round_the_circle(
-            plan, paper, ink_of(loaded + bold + dimension) + obstacles_of(frame_pivots(plan.mechanism, paper)),
+            plan, paper, bold_ink + obstacles_of(frame_pivots(plan.mechanism, paper)),
             [anchor.at for anchor in primed])
         # A number that cannot stand on its radius at a pin lettered with primes is lettered with those letters, round
         # the pin: set aside first on its own, it took the nearest spot beside the pin and left its letters the spots
@@ -169,7 +173,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, loaded + bold + dimension,
+    labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, bold_lines, bold_ink,
                                                   number_leaders, numbers, _crowded_pins(plan, paper))
     # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number),
     # and so does a position's number round the crank's circle, set clear of the bold lines alone: the Scotch yoke's
@@ -193,16 +197,16 @@ def layout(plan: PositionsPlan) -> list[Layer]:
 
 
 def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], drawn: list[Primitive],
-                               bold: list[Primitive], number_leaders: list[Polyline], numbers: list[Text],
-                               pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
+                               bold: list[Primitive], bold_ink: list[BaseGeometry], number_leaders: list[Polyline],
+                               numbers: list[Text], pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
     """The labels placed clear of the drawn lines, and those of them that the thin lines of the other positions
     break under (:func:`~graphplan.render.labels.broken_under`).
 
     The ``bold`` lines among ``drawn`` (the extremes, the springs and cylinders, the travel's dimension) are kept
-    clear of as wide as their strokes draw them (:func:`~graphplan.render.labels.ink_of`), as the numbers round the
-    crank's circle are: clear of their middles alone, the Scotch yoke's A′ stood 0.2 mm into the ink of the 0.7 mm
-    block round its top pin, and S4 half a millimetre into its 1 mm rod.  The labels of one point (a crowded crank
-    pin's number and its primed letters) then stand each in a direction of its own from it
+    clear of as wide as their strokes draw them (``bold_ink``, :func:`~graphplan.render.labels.ink_of`), as the
+    numbers round the crank's circle are: clear of their middles alone, the Scotch yoke's A′ stood 0.2 mm into the
+    ink of the 0.7 mm block round its top pin, and S4 half a millimetre into its 1 mm rod.  The labels of one point
+    (a crowded crank pin's number and its primed letters) then stand each in a direction of its own from it
     (:func:`_each_in_its_own_direction`).
 
     Where the thin lines leave no clear spot near a point (the crank's pivot, that every crank position's line
@@ -211,7 +215,7 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
     symbols, and breaks the thin lines under the letters, as ГОСТ 2.307 breaks thin lines under a dimension's
     number: set farther out on a leader it was read as naming something else.  Those labels are placed again
     without the thin lines, then the rest round them."""
-    obstacles = obstacles_of(_without(drawn, bold) + number_leaders) + ink_of(bold) + pins
+    obstacles = obstacles_of(_without(drawn, bold) + number_leaders) + bold_ink + pins
     first = _each_in_its_own_direction(
         remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False), anchors, obstacles,
         numbers)
@@ -223,7 +227,7 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
     if not breaking:
         return first, []
     over = remembered(place_labels, [anchors[index] for index in breaking],
-                      obstacles_of(_without(drawn, _breakable(every) + bold) + number_leaders) + ink_of(bold) + pins,
+                      obstacles_of(_without(drawn, _breakable(every) + bold) + number_leaders) + bold_ink + pins,
                       standing=numbers)
     rest = [index for index in range(len(anchors)) if index not in breaking]
     others = remembered(place_labels, [anchors[index] for index in rest],
@@ -262,12 +266,13 @@ def _each_in_its_own_direction(placement: Placement, anchors: list[Anchor], obst
             own_leader = _leader_of(leaders, texts[index])
             around = [leader for leader in leaders if leader is not own_leader]
             shadows = [_shadow(text_box(texts[k]), point, clearance) for k in others]
-            again = place_labels([anchors[index]], [*obstacles, *obstacles_of(around), *shadows],
-                                 standing=[*standing, *(text for k, text in enumerate(texts) if k != index)],
-                                 reach_farther=False)
+            kept_off = [*obstacles, *obstacles_of(around), *shadows]
+            again = remembered(place_labels, [anchors[index]], kept_off,
+                               standing=[*standing, *(text for k, text in enumerate(texts) if k != index)],
+                               reach_farther=False)
             (moved,) = again.texts
             box = text_box(moved)
-            if (any(box.intersects(shape) for shape in [*obstacles, *shadows, *obstacles_of(around)])
+            if (any(box.intersects(shape) for shape in kept_off)
                     or any(box.intersects(spaced_box(text)) for k, text in enumerate(texts) if k != index)
                     or any(leader.intersects(spaced_box(text)) for leader in obstacles_of(list(again.leaders))
                            for k, text in enumerate(texts) if k != index)):
