@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import math
 import re
+from pathlib import Path
 
 import pytest
 
 from graphplan.cli import main
 from graphplan.locale import strings
 
+FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 STARTERS = ["crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad"]
 
 
@@ -125,3 +127,29 @@ def test_a_reading_off_a_plan_gives_its_printed_result(tmp_path, capsys, starter
             sides = [math.floor(_number(length, mark) / unit) * unit, math.ceil(_number(length, mark) / unit) * unit]
             worked = [eval(f"{side:.{decimals - 1}f}" + rest.replace(mark, ".").replace("·", "*")) for side in sides]
             assert any(abs(value - _number(result, mark)) > _half_unit(result, mark) for value in worked), formula
+
+
+def _significant_digits(written: str, mark: str) -> int:
+    figures = written.replace(mark, "").lstrip("−0")
+    return len(figures if mark in written else figures.rstrip("0"))
+
+
+@pytest.mark.parametrize("fixture", ["tangent_mechanism_prp", "engine_slider_crank"])
+def test_a_moment_equation_s_numbers_are_no_longer_than_its_arithmetic_needs(tmp_path, capsys, fixture):
+    """Lengthening every number of a formula at once, until its printed arithmetic gave its printed result, wrote the
+    tangent mechanism's R54·h as 220.673322·0.56133356 = 123.87134 where 220.673·0.561334 reads 123.871, and the sum
+    it stands in to as many digits again.  Each number is lengthened where that brings the arithmetic nearest now:
+    the printed arithmetic still gives the printed results, and no number runs to eight significant digits."""
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURES / f"{fixture}.toml"), "--out", str(out), "--only", "note"]) == 0
+    capsys.readouterr()
+    section = _force_section((out / "note.md").read_text(encoding="utf-8"), "en")
+    formulas = worked_formulas(section, ".")
+    assert len(formulas) >= section.count("ΣM") > 0, section
+    wrong = [(formula, value) for formula, value, result in formulas
+             if abs(value - _number(result, ".")) > _half_unit(result, ".") * (1 + 1e-9)]
+    assert not wrong, wrong
+    equations = [line for line in section.splitlines() if "ΣM" in line]
+    numbers = [number for line in equations for number in re.findall(r"(?<![\w.])\d+\.\d+", line)]
+    long = [number for number in numbers if _significant_digits(number, ".") >= 8]
+    assert numbers and not long, long

@@ -379,25 +379,33 @@ def _read(note: Writer, written: str) -> float:
 
 
 def reproducing(note: Writer, values: list[float], least: list[int], result: str, digits: int,
-                combine, delays: list[int] | None = None) -> tuple[list[str], int]:
+                combine) -> list[str]:
     """``values`` written for a formula whose printed arithmetic, ``combine`` of them as written, must give the result
-    as written (``result``, to ``digits`` significant digits): each to its ``least`` significant digits, all a digit
-    more at a time until it does (1356.4/0.425 printed = 3191.5, not the −3191.7 found: 1356.35/0.42496).  Also the
-    digits added, for the formulas that give these values in turn."""
-    extra = 0
-    while True:
-        # ``delays``: how many digits the others gain before a value gains its first (a sum's small term needs a
-        # digit more only once the largest reaches its last place), else none: all grow at once.
-        written = [note.n(value, least[index] + max(0, extra - (delays[index] if delays else 0)))
-                   for index, value in enumerate(values)]
-        try:
-            if note.n(combine(*(_read(note, text) for text in written)), digits) == result:
-                return written, extra
-        except (ValueError, ZeroDivisionError):  # a power of ten (2.1·10¹¹) or a nought: written as it is
-            return written, extra
-        if max(least) + extra >= MOST_DIGITS:
-            return written, extra
-        extra += 1
+    as written (``result``, to ``digits`` significant digits): each to its ``least`` significant digits, then a digit
+    more at a time, each to the value whose digit brings the printed arithmetic nearest the exact one, until it does
+    (1356.4/0.425 printed = 3191.5, not the −3191.7 found: 1356.35/0.42496).  Lengthening every value at once gave
+    each the digits only one needed, and a formula worked from one so written more again (220.673322·0.56133356 where
+    220.673·0.561334 reads 123.871)."""
+    counts = list(least)
+    written = [note.n(value, count) for value, count in zip(values, counts, strict=True)]
+    try:
+        exact = combine(*values)
+        while note.n(combine(*(_read(note, text) for text in written)), digits) != result:
+            lengthened = []
+            for index, value in enumerate(values):
+                # A digit that writes the value as before (0.003 to six digits) is no digit: the next that changes it.
+                count = next((count for count in range(counts[index] + 1, MOST_DIGITS + 1)
+                              if note.n(value, count) != written[index]), None)
+                if count is not None:
+                    trial = [*written[:index], note.n(value, count), *written[index + 1:]]
+                    error = abs(combine(*(_read(note, text) for text in trial)) - exact)
+                    lengthened.append((error, index, count, trial))
+            if not lengthened:
+                return written
+            _, index, counts[index], written = min(lengthened, key=lambda option: option[:2])
+    except (ValueError, ZeroDivisionError):  # a power of ten (2.1·10¹¹) or a nought: written as it is
+        return written
+    return written
 
 
 def _summed(note: Writer, moments: list[float], result: str, solve, digits: int = 5) -> str:
@@ -407,18 +415,11 @@ def _summed(note: Writer, moments: list[float], result: str, solve, digits: int 
         return ""
     signs = [-1.0 if moment < 0 else 1.0 for moment in moments]
     sizes = [abs(moment) for moment in moments]
-    # A sum is as exact as its terms' last decimal place, not their digits: a digit more is asked of the largest
-    # term, and of a smaller one only down to the same place (1.303545 + 0.0024154, not + 0.002415376).
-    largest = max(_order(size) for size in sizes)
-    written, _ = reproducing(note, sizes, [5] * len(sizes), result, digits,
-                             lambda *printed: solve(sum(sign * size for sign, size in zip(signs, printed, strict=True))),
-                             delays=[largest - _order(size) for size in sizes])
+    # A sum is as exact as its terms' last decimal place, not their digits: the digit that brings it nearest goes to
+    # the largest term, a smaller one's only once the largest reaches its place (1.303545 + 0.0024154).
+    written = reproducing(note, sizes, [5] * len(sizes), result, digits,
+                          lambda *printed: solve(sum(sign * size for sign, size in zip(signs, printed, strict=True))))
     return "".join(f" {'−' if sign < 0 else '+'} {size}" for sign, size in zip(signs, written, strict=True))
-
-
-def _order(value: float) -> int:
-    """The place of a number's first digit: 2 for 258.06, −3 for 0.0024."""
-    return math.floor(math.log10(value)) if value > 0 else 0
 
 
 def _polygon_sums(note: Writer, group) -> str:
@@ -460,8 +461,8 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
         # A slide's normal reaction off its joint by x, a length, as on the force sheet: R·x signed by its moment,
         # which balances the rest (a pin's friction moment Mf56 on the ram), and x its size over |R|.
         x = note.n(shift.x)
-        (couple_text, force), _ = reproducing(note, [abs(shift.moment), shift.force], [5, 5], x, 5,
-                                              lambda moment, force: moment / force)
+        couple_text, force = reproducing(note, [abs(shift.moment), shift.force], [5, 5], x, 5,
+                                         lambda moment, force: moment / force)
         digits = _digits(couple_text)
         terms = _summed(note, moments, couple_text, lambda total: abs(total), digits)
         line = (f"{head} = {_sign(equation.value)}{unknown}{terms} = 0 ⇒ "
@@ -478,9 +479,9 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
         # sign·R·arm + Σ = 0: R = −Σ/(sign·arm), the arm written as the equation and the solution both write it.
         lever = -total / equation.value if equation.value else equation.arm
         sign = -1.0 if lever < 0 else 1.0
-        (sum_text, arm), extra = reproducing(note, [abs(total), equation.arm], [5, 4], value, 5,
-                                             lambda size, arm: -math.copysign(size, total) / (sign * arm))
-        terms = _summed(note, moments, sum_text, lambda found: abs(found), 5 + extra)
+        sum_text, arm = reproducing(note, [abs(total), equation.arm], [5, 4], value, 5,
+                                    lambda size, arm: -math.copysign(size, total) / (sign * arm))
+        terms = _summed(note, moments, sum_text, lambda found: abs(found), _digits(sum_text))
         written_sum = f"−{sum_text}" if total < 0 else sum_text
         # −Σ/arm, or Σ/arm where the unknown stands with a minus: a negative Σ after a minus in brackets.
         solved = f"{written_sum}/{arm}" if sign < 0 else f"−{note.enclosed(written_sum)}/{arm}"
@@ -494,8 +495,8 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
 def worked_product(note: Writer, factors: list[float], result: str) -> str:
     """``6·1.1844``: the factors of a product the note writes as ``result``, each to as many digits as make their
     printed product read it (6·1.18440, not 6·1.1844 = 7.1061)."""
-    written, _ = reproducing(note, factors, [5] * len(factors), result, _digits(result),
-                             lambda *printed: math.copysign(math.prod(printed), _read(note, result)))
+    written = reproducing(note, factors, [5] * len(factors), result, _digits(result),
+                          lambda *printed: math.copysign(math.prod(printed), _read(note, result)))
     return note.product(*written)
 
 
@@ -523,8 +524,8 @@ def _moment_parts(note: Writer, shown, loads: Mapping[str, object], written: lis
         force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
         if force is not None and term.arm:
             digits = _digits(size)
-            (magnitude, arm), _ = reproducing(note, [abs(force), term.arm], [5, 4], size, digits,
-                                              lambda force, arm: abs(force * arm))
+            magnitude, arm = reproducing(note, [abs(force), term.arm], [5, 4], size, digits,
+                                         lambda force, arm: abs(force * arm))
             parts.append(f"M({symbol}) = {_sign(term.moment)}{symbol}·h = "
                          f"{_sign(term.moment)}{note.product(magnitude, arm)} = {moment} {note.text['newton_metre']}")
         else:
@@ -593,12 +594,12 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
         # Fb as long as |Mb| = Fb·l, written to six digits, needs it to read so; then |Σ(F·h)| and pa as long as Fb needs.
         moment = note.n(abs(lever.balancing), 6)
         if driver.kind == "crank":
-            (written_force, arm), _ = reproducing(note, [force, driver.length], [5, 5], moment, 6,
-                                                  lambda force, arm: force * arm)
+            written_force, arm = reproducing(note, [force, driver.length], [5, 5], moment, 6,
+                                             lambda force, arm: force * arm)
         else:
             written_force = note.n(force)
-        (moments, pole), _ = reproducing(note, [abs(total), pa], [5, 5], written_force,
-                                         _digits(written_force), lambda moments, pole: moments / pole)
+        moments, pole = reproducing(note, [abs(total), pa], [5, 5], written_force,
+                                    _digits(written_force), lambda moments, pole: moments / pole)
         # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
         lever_force = load_symbol("Fb", text)
         equation = f"{lever_force} = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"

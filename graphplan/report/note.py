@@ -970,8 +970,8 @@ class _Note:
             return
         centripetal = self.n(omega * omega * arm)
         # ω² times the arm as printed gives the result as printed: 6.28319²·0.1 = 3.9478, where 6.2832² gave 3.9479.
-        (written_omega, written_arm), _ = reproducing(self, [omega, arm], [5, 5], centripetal, 5,
-                                                      lambda omega, arm: omega * omega * arm)
+        written_omega, written_arm = reproducing(self, [omega, arm], [5, 5], centripetal, 5,
+                                                 lambda omega, arm: omega * omega * arm)
         normal = f"a{joint}ⁿ = ω{driver.link}²·{length} = {written_omega}²{self.text['times']}{written_arm} = " \
                  f"{centripetal} {unit}"
         if epsilon == 0:
@@ -1194,8 +1194,8 @@ class _Note:
                                                              abs_tol=_SAME * value + 1e-300):
             return f"{self.n(value)} {unit}", direction
         written = self.n(value)
-        (written_omega, written_length), _ = reproducing(self, [abs(omega), length], [5, 5], written, 5,
-                                                         lambda omega, length: omega * omega * length)
+        written_omega, written_length = reproducing(self, [abs(omega), length], [5, 5], written, 5,
+                                                    lambda omega, length: omega * omega * length)
         modulus = (f"ω{link}²·l{centre}{moving} = {written_omega}²{self.text['times']}{written_length} = "
                    f"{written} {unit}")
         return modulus, direction
