@@ -16,6 +16,7 @@ import re
 from functools import cache
 
 import pytest
+from note_lines import items_on_one_line
 from test_press_with_friction import PRESS, shaper_text
 
 from graphplan import load_text
@@ -45,7 +46,7 @@ def friction_blocks(name: str, locale: str) -> tuple[str, ...]:
     """The text of each plan position's force analysis with friction, from its bold lead to the position's end."""
     analysis = analysis_of(name, locale)
     text = strings(locale)
-    note = note_markdown(analysis)
+    note = "\n".join(items_on_one_line(note_markdown(analysis), text["semicolon"]))
     lead = f"**{text['forces_friction']}{text['full_stop']}**"
     blocks = []
     for part in note.split(lead)[1:]:

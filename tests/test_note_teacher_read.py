@@ -15,6 +15,7 @@ import math
 import re
 
 import pytest
+from note_lines import items_on_one_line
 
 import graphplan
 from graphplan.analysis import analyse
@@ -58,7 +59,7 @@ def read(request):
     name, locale = request.param
     scene = dataclasses.replace(graphplan.load(f"fixtures/{name}.toml"), locale=locale)
     analysis = analyse(scene)
-    return scene, note_markdown(analysis).splitlines(), results(analysis)
+    return scene, items_on_one_line(note_markdown(analysis), strings(locale)["semicolon"]), results(analysis)
 
 
 def sections(lines: list[str]):

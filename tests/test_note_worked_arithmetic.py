@@ -149,7 +149,8 @@ def test_a_moment_equation_s_numbers_are_no_longer_than_its_arithmetic_needs(tmp
     wrong = [(formula, value) for formula, value, result in formulas
              if abs(value - _number(result, ".")) > _half_unit(result, ".") * (1 + 1e-9)]
     assert not wrong, wrong
-    equations = [line for line in section.splitlines() if "ΣM" in line]
-    numbers = [number for line in equations for number in re.findall(r"(?<![\w.])\d+\.\d+", line)]
+    # The moment equations' items, each moment on a line of its own within its item.
+    items = [line for line in section.splitlines() if re.match(r"(?:- |  )(?:M|ΣM)", line)]
+    numbers = [number for line in items for number in re.findall(r"(?<![\w.])\d+\.\d+", line)]
     long = [number for number in numbers if _significant_digits(number, ".") >= 8]
     assert numbers and not long, long

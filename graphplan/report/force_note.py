@@ -469,7 +469,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
                 f"{unknown} = {couple_text} {unit}{text['comma']}x = {couple_text}/{force} = "
                 f"{x} {text['unit_m']} = {note.n(1000.0 * shift.x)} {text['millimetre']}")
         moments_written = _written_terms(terms)
-        return note.text["semicolon"].join([*_moment_parts(note, shown, loads, moments_written), line])
+        return _one_a_line([*_moment_parts(note, shown, loads, moments_written), line])
     elif couple:
         value = note.n(equation.value)
         terms = _summed(note, moments, value, lambda total: -total)
@@ -489,7 +489,13 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
                 f" ⇒ {unknown} = {solved} = {value} {unit}")
         if equation.value < 0:
             line += " " + note.t("note_sense_reversed", name=unknown)
-    return note.text["semicolon"].join([*_moment_parts(note, shown, loads, _written_terms(terms)), line])
+    return _one_a_line([*_moment_parts(note, shown, loads, _written_terms(terms)), line])
+
+
+def _one_a_line(parts: list[str]) -> str:
+    """An equation's moments each on a line of its own within its item, the equation last: run on as one
+    paragraph, a dozen M(·) = F·h = … broke mid-formula wherever the page's line ended."""
+    return "\\\n  ".join(parts)
 
 
 def worked_product(note: Writer, factors: list[float], result: str) -> str:
