@@ -30,7 +30,7 @@ from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
 from . import lettering
-from .labels import Anchor, obstacles_of, open_direction, place_labels, remembered
+from .labels import Anchor, obstacles_and_shafts, obstacles_of, open_direction, place_labels, remembered
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -408,7 +408,10 @@ def _plan_layers(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list
         at = _xy(plan.mm(group[0]))
         text = ", ".join(pole if letter == "p" else letter for letter in group)
         anchors.append(Anchor(at, text, LETTER_SIZE, open_direction(at, actions + figures + vectors)))
-    labels = remembered(place_labels, anchors, obstacles_of(drawn))
+    # Clear of the vectors' and lines' ink, as wide as each is drawn: kept off their middles alone, a letter stood
+    # with its box on a 0.6 mm vector's edge (the Stephenson six-bar's g along pa, s2 on pa of most plans).
+    ink, _ = obstacles_and_shafts(drawn, shafts_inked=True, lines_inked=True)
+    labels = remembered(place_labels, anchors, ink)
     return [Layer(f"{kind}-lines", tuple(actions + figures)), Layer(f"{kind}-vectors", tuple(vectors)),
             Layer(f"{kind}-points", tuple(dots)), Layer(f"{kind}-leaders", labels.leaders),
             Layer(f"{kind}-labels", labels.texts)]
