@@ -209,6 +209,13 @@ FINE_SHARES = (0.0, 0.25, 0.5, 1.1, 1.8)
 # of it: a neighbour is not moved to such a spot.
 ALONG = 1.0
 ALONG_WIDTH = 0.25
+# A leader running beside a drawn line, nearly along it, reads as part of it too (a hatch stroke's twin, the slider
+# driven mechanism's G led down beside its guide's hatching): where the caller asks (``place_labels``' leaders_apart),
+# one with more than ALONG of its length nearer than ISO 128-20's least space between parallel lines, 0.7 mm, to a
+# line's ink (an inked obstacle's edge, else a line's middle), within BESIDE_ANGLE of its direction, counts as a
+# line covered.
+BESIDE_SPACE = 0.7
+BESIDE_ANGLE = math.radians(20.0)
 # How many cheaper spots a label left on a line looks at, and how many of those it tries, each by moving the one
 # neighbour that stands there (a spot two labels stand on is passed over).
 SPOTS_LOOKED_AT = 12
@@ -254,7 +261,8 @@ LABEL_GAP_MM = 1.2
 
 def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = LABEL_GAP_MM,
                  standing: Sequence[Text] = (), off_lines: bool = False,
-                 reach_farther: bool | Sequence[bool] = True, shafts: Sequence[bool] = ()) -> Placement:
+                 reach_farther: bool | Sequence[bool] = True, shafts: Sequence[bool] = (),
+                 leaders_apart: bool | Sequence[BaseGeometry] = False) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 
     Another label or leader is never covered when any spot avoids it.  A
@@ -313,6 +321,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     a spot counts as a line covered, and is reached out to only by a label
     whose name would lie on a line otherwise.
 
+    ``leaders_apart`` counts a leader that runs beside a drawn line's ink,
+    nearly along it, as a line covered (:data:`BESIDE_SPACE`): beside a
+    hatch stroke it reads as one more (the plan of positions).  Given as
+    shapes, beside those lines too, which the labels may cover (thin lines
+    broken under them, but not under their leaders).
+
     ``off_lines`` keeps the labels off the drawn lines wherever any spot,
     farther out too, does, for a drawing of few lines with room round them
     (a balancing polygon): a long name on the middle of a side inside the
@@ -334,6 +348,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     crossed_weights[shafts_met] = SHAFT_CROSSED
     pieces, owners = _pieces(fixed)
     tree = STRtree(pieces) if fixed else None
+    edges, edge_directions = _edges([] if leaders_apart is False
+                                    else [*fixed, *(() if leaders_apart is True else leaders_apart)])
+    edge_tree = STRtree(edges) if len(edges) else None
     shaft_tree = STRtree(fixed_shafts) if len(fixed_shafts) else None
     at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
     # Each placed label's box (kept apart by a little more than touching) and leader, by its anchor's index.
@@ -468,6 +485,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # A leader across a load's arrow counts as a line covered, as its name on the arrow would: the label is moved
         # off it, or reaches out, as one lying on a line is (``letter``).
         covering[led] += table[len(shapes):, shafts_met].sum(axis=1)
+        # One run beside a line (where the caller asks) as one on it.
+        beside_a_line = runs_beside(lines)
+        cost[led[beside_a_line]] += COVER
+        covering[led[beside_a_line]] += 1
         if off_lines:
             cost[covering > 0] += LINE_COVERED
         line_bounds = shapely.bounds(lines)
@@ -565,7 +586,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         across = 0.0
         if index in leader_lines and len(shafts_met):
             across = float(shapely.intersects(_to_the_box(np.array([leader_lines[index]]))[0], fixed_shafts).sum())
-        where[index] = (kind, best, float(spot.covering[best]), float(spot.covering[best]) - across)
+        # And whether it stands within its anchor's ``keep_off``: what, with a line covered, sends it reaching out.
+        kept_off = bool(_kept_off(anchor, candidates[best:best + 1], ~beside[best:best + 1])[0])
+        where[index] = (kind, best, float(spot.covering[best]), float(spot.covering[best]) - across, kept_off)
 
     def place(index: int) -> None:
         """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
@@ -593,10 +616,30 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 
     straight = shapely.get_type_id(pieces) == shapely.GeometryType.LINESTRING if fixed else np.zeros(0, dtype=bool)
 
+    def runs_beside(leaders: np.ndarray) -> np.ndarray:
+        """Whether each of ``leaders`` runs beside a drawn line's ink, nearly along it (:data:`BESIDE_SPACE`), where
+        the caller asks (``leaders_apart``): all False else."""
+        found = np.zeros(len(leaders), dtype=bool)
+        if edge_tree is None or not len(leaders):
+            return found
+        width = BESIDE_SPACE + LEADER_WIDTH / 2
+        hit, edge = edge_tree.query(leaders, predicate="dwithin", distance=width)
+        ends = shapely.get_coordinates(leaders).reshape(-1, 2, 2)
+        along = ends[:, 1] - ends[:, 0]
+        along /= np.maximum(np.hypot(*along.T), 1e-12)[:, None]
+        sine = np.abs(along[hit, 0] * edge_directions[edge, 1] - along[hit, 1] * edge_directions[edge, 0])
+        hit, edge = hit[sine < math.sin(BESIDE_ANGLE)], edge[sine < math.sin(BESIDE_ANGLE)]
+        run = shapely.length(shapely.intersection(leaders[hit], shapely.buffer(edges[edge], width, cap_style="flat")))
+        found[hit[run > ALONG]] = True
+        return found
+
     def runs_along(leader: BaseGeometry) -> bool:
-        """Whether ``leader`` runs along a drawn line (more than ALONG of it on the line), reading as part of it."""
+        """Whether ``leader`` runs along a drawn line (more than ALONG of it on the line), reading as part of it; or,
+        where the caller asks, beside one (:func:`runs_beside`)."""
         if tree is None:
             return False
+        if runs_beside(np.array([leader]))[0]:
+            return True
         # Within a stroke's width of the line, not only on it: a point a hair off its line leads along it too.
         near = tree.query(leader, predicate="dwithin", distance=ALONG_WIDTH)
         near = near[straight[near]]
@@ -608,7 +651,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         cheapest of finer spots round its point (twice the directions, a ring between the two beside it, no farther
         out than those led to it), and else to one of those that a single neighbouring label stands on, when that
         neighbour finds another spot covering no more, and the two cost less together."""
-        kind, best, covers, _ = where[index]
+        kind, best, covers, *_ = where[index]
         # Between lines meeting at a point a clear spot often lies between two of the standard ones.
         spot = spots(index, "fine")
         cost, covering, clashing = spot.cost, spot.covering, spot.clashing
@@ -756,7 +799,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 yield int(best)
 
     def reach_out(index: int, moving: bool = True, leading: bool = True,
-                  shares: tuple[float, ...] = REACH_SHARES, from_line: bool = False, across_shafts: bool = False) -> bool:
+                  shares: tuple[float, ...] = REACH_SHARES, from_line: bool = False, across_shafts: bool = False,
+                  cheaper: bool = False) -> bool:
         """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
         reach (its leader as long as the rings at ``shares`` letter heights) whose box covers nothing and whose leader
         crosses no label and runs along no line: beside another point of the line it names, or (``leading``) on a short
@@ -764,11 +808,15 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         reaches such a spot too, beside its point if it stood there; ``from_line``, also on a leader from another
         point of the line it names (:func:`reachable`); ``across_shafts``, led across a load's arrow too.  Such a spot
         costs more than the line it leaves by
-        the rules of :func:`costed`, which let a letter lie on one line sooner than lead it off across two.  Whether
-        the label moved."""
+        the rules of :func:`costed`, which let a letter lie on one line sooner than lead it off across two.
+        ``cheaper``: the label covers nothing where it stands, and only a spot that costs less than it paid there will
+        do, no neighbour moved for it.  Whether the label moved."""
         spot, shapes, is_led, usable = reachable(index, leading, shares, from_line, across_shafts)
         # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
         open_ = usable & (crossing_placed(shapes, leader_lines, index) == 0)
+        if cheaper:
+            open_ &= spot.cost < paid[index] - 1e-9
+            moving = False
         open_[spot.led] &= crossing_placed(spot.leaders, placed_boxes, index) == 0
         if not open_.any():
             return False
@@ -788,6 +836,14 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 return True
             restore(state)
         return False
+
+    def astray(index: int) -> bool:
+        """Whether the label of ``index`` stands where it must not: on a line, on another label, or within its anchor's
+        ``keep_off``.  One that paid as much as that for its leader's way alone stands clear, and moves only where it
+        pays less: sent reaching out, the Scotch yoke's A′, clear on a short leader up to the right of its top pin, went
+        to a dearer spot 9 mm to the left behind the pin's number, and, set again out of the number's shadow, stood
+        8 mm down across the blocks."""
+        return where[index][2] > 0 or where[index][4] or paid[index] >= OVERLAP
 
     # The farthest a label reaches from its point (letter heights beyond the gap): a neighbour it moves to make room
     # is led no farther than that, or than it was.
@@ -827,7 +883,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             for k in neighbours:
                 place(k)
                 if where[k][2] > 0 or paid[k] >= KEPT_OFF:
-                    reach_out(k, moving=False)
+                    reach_out(k, moving=False, cheaper=not astray(k))
             if (sum(where[k][2] > 0 for k in neighbours) < sum(lying)
                     and sum(where[k][2] for k in neighbours) <= covering + 1e-9
                     and all(paid[k] < OVERLAP for k in neighbours)
@@ -861,7 +917,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # Those still on a line, or on another label, reach farther for a spot clear of everything.
         for index in order:
             if where[index][2] > 0 or paid[index] >= KEPT_OFF:
-                reach_out(index)
+                reach_out(index, cheaper=not astray(index))
         # Those on a line still, where a clear spot within reach is held by a few neighbours, move them.
         for index in order:
             if where[index][2] > 0 and paid[index] < OVERLAP:
@@ -880,7 +936,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     farther = np.broadcast_to(np.asarray(reach_farther, dtype=bool), len(anchors))
 
     order = _most_crowded_first(anchors, at)
-    where: dict[int, tuple[str, int, float]] = {}
+    where: dict[int, tuple[str, int, float, float, bool]] = {}
     letter()
     leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
@@ -935,11 +991,13 @@ def shapes_digest(shapes: Sequence[BaseGeometry], head: str) -> bytes:
 
 def _as_written(value: object) -> object:
     """``value`` for :func:`remembered`'s key: an array by its type, shape and bytes (its repr elides a long one's
-    middle), a sequence item by item."""
+    middle), a shape by its WKB (so does its repr), a sequence item by item."""
     if isinstance(value, np.ndarray):
         return ("array", value.dtype.str, value.shape, value.tobytes())
     if isinstance(value, (list, tuple)):
         return (type(value).__name__, *(_as_written(item) for item in value))
+    if isinstance(value, BaseGeometry):
+        return ("shape", shapely.to_wkb(value))
     return value
 
 
@@ -1033,6 +1091,25 @@ def _pieces(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
     cut[owners] = True
     kept = np.flatnonzero(~cut)
     return np.concatenate((segments, whole[kept])), np.concatenate((owners, kept))
+
+
+def _edges(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
+    """The straight edges of the obstacles' ink as segments, and each one's direction (a unit vector): a line's
+    segments (its middle: a thin line), and the segments of a shape's outline (an inked line's edges, a block's
+    sides), beside which a leader runs."""
+    whole = np.array(shapes, dtype=object)
+    if not len(whole):
+        return np.zeros(0, dtype=object), np.zeros((0, 2))
+    kinds = shapely.get_type_id(whole)
+    areas = (kinds == shapely.GeometryType.POLYGON) | (kinds == shapely.GeometryType.MULTIPOLYGON)
+    outlines = np.concatenate((whole[~areas], shapely.boundary(whole[areas])))
+    parts = shapely.get_parts(outlines)
+    parts = parts[shapely.get_type_id(parts) != shapely.GeometryType.POINT]
+    ends, of_part = shapely.get_coordinates(parts, return_index=True)
+    segment = (of_part[:-1] == of_part[1:]) & np.any(ends[:-1] != ends[1:], axis=1)
+    starts, stops = ends[:-1][segment], ends[1:][segment]
+    along = stops - starts
+    return shapely.linestrings(np.stack((starts, stops), axis=1)), along / np.hypot(*along.T)[:, None]
 
 
 def cover_one_another(texts: Sequence[Text]) -> bool:

@@ -155,15 +155,16 @@ def layout(plan: PositionsPlan) -> list[Layer]:
         swing_texts += [item for item in items if travel.swing and isinstance(item, Text)]
     drawn = every + loaded + bold + frame + paths + dimension
     # The bold lines the numbers and letters keep off by their ink: the extremes, the springs and cylinders, the
-    # travel's dimension.
+    # travel's dimension; the letters the frame's symbols' too.
     bold_lines = loaded + bold + dimension
     bold_ink = ink_of(bold_lines)
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
-        # the frame's pivots too: round a crank drawn a few millimetres long they fell on its pivot's triangle.
+        # the frame's pivots' ink too, as the letters are: round a crank drawn a few millimetres long they fell on its
+        # pivot's triangle.
         primed = _extreme_anchors(plan, paper, names=False)
         numbers, number_leaders, crowded = _numbers_round_the_circle(
-            plan, paper, bold_ink + obstacles_of(frame_pivots(plan.mechanism, paper)),
+            plan, paper, bold_ink + ink_of(frame_pivots(plan.mechanism, paper)),
             [anchor.at for anchor in primed])
         # A number that cannot stand on its radius at a pin lettered with primes is lettered with those letters, round
         # the pin: set aside first on its own, it took the nearest spot beside the pin and left its letters the spots
@@ -173,8 +174,9 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, bold_lines, bold_ink,
-                                                  number_leaders, numbers, _crowded_pins(plan, paper))
+    labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, bold_lines + frame,
+                                                  bold_ink + ink_of(frame), number_leaders, numbers,
+                                                  _crowded_pins(plan, paper))
     # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number),
     # and so does a position's number round the crank's circle, set clear of the bold lines alone: the Scotch yoke's
     # 10 and 4 stood struck through by the ends of its slot at those positions.
@@ -197,28 +199,33 @@ def layout(plan: PositionsPlan) -> list[Layer]:
 
 
 def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], drawn: list[Primitive],
-                               bold: list[Primitive], bold_ink: list[BaseGeometry], number_leaders: list[Polyline],
+                               inked: list[Primitive], ink: list[BaseGeometry], number_leaders: list[Polyline],
                                numbers: list[Text], pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
     """The labels placed clear of the drawn lines, and those of them that the thin lines of the other positions
     break under (:func:`~graphplan.render.labels.broken_under`).
 
-    The ``bold`` lines among ``drawn`` (the extremes, the springs and cylinders, the travel's dimension) are kept
-    clear of as wide as their strokes draw them (``bold_ink``, :func:`~graphplan.render.labels.ink_of`), as the
-    numbers round the crank's circle are: clear of their middles alone, the Scotch yoke's A′ stood 0.2 mm into the
-    ink of the 0.7 mm block round its top pin, and S4 half a millimetre into its 1 mm rod.  The labels of one point
-    (a crowded crank pin's number and its primed letters) then stand each in a direction of its own from it
-    (:func:`_each_in_its_own_direction`).
+    The ``inked`` lines among ``drawn`` (the extremes, the springs and cylinders, the travel's dimension, and the
+    frame's symbols, whose thin hatching is never broken under a label either) are kept clear of as wide as their
+    strokes draw them (``ink``, :func:`~graphplan.render.labels.ink_of`), as the numbers round the crank's circle are: clear of
+    their middles alone, the Scotch yoke's A′ stood 0.2 mm into the ink of the 0.7 mm block round its top pin, S4 half
+    a millimetre into its 1 mm rod, and the engine's O on its pivot's hatching.  A leader is kept from running beside
+    a line, nearly along it (``place_labels``' ``leaders_apart``): the slider driven mechanism's G was led down
+    beside a stroke of its guide's hatching, reading as one more, and a crank's pivot O led off along the thin lines
+    of the crank's positions.  The labels of one point (a crowded crank pin's number and its primed letters) then
+    stand each in a direction of its own from it (:func:`_each_in_its_own_direction`).
 
     Where the thin lines leave no clear spot near a point (the crank's pivot, that every crank position's line
     leaves; a swing's ψ on its arc, across the rocker's positions; a centre of mass among the links' thin
     outlines), a draughtsman letters it beside its point all the same, clear of the bold lines and the frame's
     symbols, and breaks the thin lines under the letters, as ГОСТ 2.307 breaks thin lines under a dimension's
     number: set farther out on a leader it was read as naming something else.  Those labels are placed again
-    without the thin lines, then the rest round them."""
-    obstacles = obstacles_of(_without(drawn, bold) + number_leaders) + bold_ink + pins
+    without the thin lines, then the rest round them; their leaders, which the thin lines are not broken under, kept
+    from running beside those lines all the same (the Scotch yoke's O was led out along the thin line of a position
+    of its rod)."""
+    obstacles = obstacles_of(_without(drawn, inked) + number_leaders) + ink + pins
     first = _each_in_its_own_direction(
-        remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False), anchors, obstacles,
-        numbers)
+        remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False, leaders_apart=True),
+        anchors, obstacles, numbers)
     lines = [shape for shape in obstacles_of(drawn + number_leaders + list(first.leaders))
              if shape.geom_type == "LineString"]
     tree = STRtree(lines)
@@ -227,11 +234,12 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
     if not breaking:
         return first, []
     over = remembered(place_labels, [anchors[index] for index in breaking],
-                      obstacles_of(_without(drawn, _breakable(every) + bold) + number_leaders) + bold_ink + pins,
-                      standing=numbers)
+                      obstacles_of(_without(drawn, _breakable(every) + inked) + number_leaders) + ink + pins,
+                      standing=numbers, leaders_apart=obstacles_of(_breakable(every)))
     rest = [index for index in range(len(anchors)) if index not in breaking]
     others = remembered(place_labels, [anchors[index] for index in rest],
-                        obstacles + obstacles_of(list(over.leaders)), standing=[*numbers, *over.texts])
+                        obstacles + obstacles_of(list(over.leaders)), standing=[*numbers, *over.texts],
+                        leaders_apart=True)
     texts = dict(zip(breaking, over.texts)) | dict(zip(rest, others.texts))
     return Placement(tuple(texts[index] for index in range(len(anchors))), over.leaders + others.leaders), \
         list(over.texts)
@@ -269,7 +277,7 @@ def _each_in_its_own_direction(placement: Placement, anchors: list[Anchor], obst
             kept_off = [*obstacles, *obstacles_of(around), *shadows]
             again = remembered(place_labels, [anchors[index]], kept_off,
                                standing=[*standing, *(text for k, text in enumerate(texts) if k != index)],
-                               reach_farther=False)
+                               reach_farther=False, leaders_apart=True)
             (moved,) = again.texts
             box = text_box(moved)
             if (any(box.intersects(shape) for shape in kept_off)
