@@ -9,6 +9,7 @@ geometry, not from the labels' anchors.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -51,7 +52,7 @@ def _segments(root: ET.Element, groups: set[str]) -> list[tuple[shapely.LineStri
             numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
             points = list(zip(numbers[0::2], numbers[1::2]))
             found += [(shapely.LineString(pair), float(item.get("stroke-width", "0")))
-                      for pair in zip(points, points[1:]) if pair[0] != pair[1]]
+                      for pair in itertools.pairwise(points) if pair[0] != pair[1]]
     return found
 
 
