@@ -350,7 +350,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     tree = STRtree(pieces) if fixed else None
     edges, edge_directions = _edges([] if leaders_apart is False
                                     else [*fixed, *(() if leaders_apart is True else leaders_apart)])
-    edge_tree = STRtree(edges) if len(edges) else None
+    # Each edge's bounds, grown as far as a leader's middle runs beside it: those a leader's meet are measured.
+    edge_reach = shapely.bounds(edges) + (BESIDE_SPACE + LEADER_WIDTH / 2) * np.array([-1.0, -1.0, 1.0, 1.0])
+    edge_tree = STRtree(shapely.box(*edge_reach.T)) if len(edges) else None
+    edge_ends = shapely.get_coordinates(edges).reshape(-1, 2, 2)
     shaft_tree = STRtree(fixed_shafts) if len(fixed_shafts) else None
     at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
     # Each placed label's box (kept apart by a little more than touching) and leader, by its anchor's index.
@@ -622,15 +625,16 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         found = np.zeros(len(leaders), dtype=bool)
         if edge_tree is None or not len(leaders):
             return found
-        width = BESIDE_SPACE + LEADER_WIDTH / 2
-        hit, edge = edge_tree.query(leaders, predicate="dwithin", distance=width)
+        # How far a leader runs within each band is measured exactly below.
+        hit, edge = edge_tree.query(leaders)
         ends = shapely.get_coordinates(leaders).reshape(-1, 2, 2)
         along = ends[:, 1] - ends[:, 0]
         along /= np.maximum(np.hypot(*along.T), 1e-12)[:, None]
-        sine = np.abs(along[hit, 0] * edge_directions[edge, 1] - along[hit, 1] * edge_directions[edge, 0])
-        hit, edge = hit[sine < math.sin(BESIDE_ANGLE)], edge[sine < math.sin(BESIDE_ANGLE)]
-        run = shapely.length(shapely.intersection(leaders[hit], shapely.buffer(edges[edge], width, cap_style="flat")))
-        found[hit[run > ALONG]] = True
+        # Nearly along the edge: only those pairs are measured.
+        near = np.abs(along[hit, 0] * edge_directions[edge, 1] - along[hit, 1] * edge_directions[edge, 0]) \
+            < math.sin(BESIDE_ANGLE)
+        hit, edge = hit[near], edge[near]
+        found[hit[_run_within(ends[hit], edge_ends[edge], BESIDE_SPACE + LEADER_WIDTH / 2) > ALONG]] = True
         return found
 
     def runs_along(leader: BaseGeometry) -> bool:
@@ -1110,6 +1114,34 @@ def _edges(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
     starts, stops = ends[:-1][segment], ends[1:][segment]
     along = stops - starts
     return shapely.linestrings(np.stack((starts, stops), axis=1)), along / np.hypot(*along.T)[:, None]
+
+
+def _run_within(lines: np.ndarray, edges: np.ndarray, width: float) -> np.ndarray:
+    """How much of each segment of ``lines`` (its two ends, in the last two axes) runs within ``width`` of the segment
+    of ``edges`` beside it, between the perpendiculars at its ends: its band as a flat-capped buffer draws it.  Both
+    ends' offsets from the edge's line and places along it change linearly along the segment, so the part within is
+    where the intervals of both meet."""
+    start, stop = edges[:, 0], edges[:, 1]
+    length = np.maximum(np.hypot(*(stop - start).T), 1e-12)
+    unit = (stop - start) / length[:, None]
+
+    def placed(point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        offset = point - start
+        return (offset[:, 0] * unit[:, 0] + offset[:, 1] * unit[:, 1],
+                offset[:, 1] * unit[:, 0] - offset[:, 0] * unit[:, 1])
+
+    (along0, off0), (along1, off1) = placed(lines[:, 0]), placed(lines[:, 1])
+    low, high = np.zeros(len(lines)), np.ones(len(lines))
+    for first, last, least, most in ((off0, off1, -width, width), (along0, along1, 0.0, length)):
+        change = last - first
+        steady = np.abs(change) < 1e-12
+        with np.errstate(divide="ignore", invalid="ignore"):
+            enter, leave = (least - first) / change, (most - first) / change
+        enter, leave = np.minimum(enter, leave), np.maximum(enter, leave)
+        inside = (first >= least) & (first <= most)
+        low = np.maximum(low, np.where(steady, np.where(inside, 0.0, 1.0), enter))
+        high = np.minimum(high, np.where(steady, np.where(inside, 1.0, 0.0), leave))
+    return np.maximum(high - low, 0.0) * np.hypot(*(lines[:, 1] - lines[:, 0]).T)
 
 
 def cover_one_another(texts: Sequence[Text]) -> bool:
