@@ -253,7 +253,10 @@ def require_moving(motion: Motion, working: Working | None = None) -> None:
     shape = motion.driver.shape
     if working.link in mechanism.translating:
         along = np.broadcast_to(dot(link.u, motion.points[link.origin].r), shape)
-        size = max(float(np.max(np.abs(point.r))) for point in motion.points.values())
+        # Measured by the joints alone: a named point (a centre of mass) placed far off its link moves nothing, and
+        # would otherwise make a real stroke read as rest.
+        named = {spec.name for spec in mechanism.scene.points}
+        size = max(float(np.max(np.abs(point.r))) for name, point in motion.points.items() if name not in named)
         travel, rest, unit = float(np.ptp(along)), 1e-9 * max(size, 1e-300), "m"
     else:
         angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)

@@ -207,7 +207,9 @@ class _Note:
         tries = [(f"{millimetres:.{decimals}f}".replace(".", self.mark), self.n(scale, digits),
                   *([self.n(length, digits)] if length is not None else []))
                  for digits in (5, 6, 7) for decimals in range(2, 7)]
-        if "·10" in result:  # a power of ten: no digits of the length make it read back, and none are added
+        # A power of ten, in the result or in a factor (a named point typed a billion metres out): no digits of the
+        # length make it read back, and none are added.
+        if "·10" in result or any("·10" in text for text in tries[0]):
             return tries[0]
         # Read as the reader reads it: to half a unit of the result's last printed digit (1.36 for 1.35995).
         target = float(result.replace(self.mark, "."))

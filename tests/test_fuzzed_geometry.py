@@ -1,0 +1,72 @@
+"""Scenes a geometry fuzzer (each fixture's and starter's lengths, offsets and coordinates scaled one at a time, the
+positions' count, start and plans changed, a point's `at`, a mass, an inertia or a load made tiny or huge, each run
+in full in every language and on other sheets) found answered wrongly: each as the small scene it came down to,
+and the answer a student should get instead."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from graphplan.cli import main
+
+CENTRAL_SLIDER_CRANK = """
+[scene]
+title = "A central slider-crank, its crank's centre of mass typed {at} m out"
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.05
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.19
+guide = {{ through = "O", angle = 0.0 }}
+assembly = "forward"
+[points]
+S2 = {{ link = 2, from = "O", toward = "A", at = {at} }}
+[links.2]
+mass = 4.5
+centre = "S2"
+[positions]
+count = 12
+working = {{ link = 4, sense = "backward" }}
+plans = [2]
+"""
+
+
+def _scene(tmp_path: Path, text: str) -> Path:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    return scene
+
+
+def test_a_centre_of_mass_far_off_its_crank_leaves_the_piston_its_stroke(tmp_path, capsys) -> None:
+    """A named point typed a billion metres out on the crank was counted in the size the working link's travel is
+    weighed against: the piston, which travels 2r = 0.1 m whatever the crank's mass does, was refused as "does not
+    move over the crank's turn: its travel is 0.1 m".  A centre of mass moves nothing; the scene is checked, its
+    central slider-crank's strokes equal (K = 1), and the far point told at its own key."""
+    assert main(["check", str(_scene(tmp_path, CENTRAL_SLIDER_CRANK.format(at=1e9)))]) == 0
+    told = capsys.readouterr()
+    assert "working φw = 180.00°, idle φi = 180.00°, K = φw/φi = 1.0000" in told.out
+    assert "does not move" not in told.out + told.err
+    assert "warning: points.S2.at = 1e+09 m" in told.out + told.err
+
+
+def test_a_note_whose_reading_has_a_length_in_powers_of_ten_is_written(tmp_path, capsys) -> None:
+    """The note writes each plan reading's factors with digits added until the printed arithmetic gives the printed
+    result, reading them back as plain decimals: a link's length it writes 1·10⁹ ended the run in a ValueError
+    (could not convert string to float: '1·10⁹') after the drawings were made.  The note is written, and its ω2
+    read off the velocity plan is the crank's own ω = 10 rad/s."""
+    out = tmp_path / "out"
+    scene = _scene(tmp_path, CENTRAL_SLIDER_CRANK.format(at=1e9))
+    assert main(["run", str(scene), "--out", str(out), "--only", "velocity,note"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    omega = [line for line in note.splitlines() if line.startswith("- ω2 = ")]
+    assert omega and omega[0].endswith("/1·10⁹ = 10 rad/s, counter-clockwise"), omega
