@@ -175,11 +175,16 @@ def refused_at_slip(motion: Motion, drawn: str, across_mm: float, largest_mm: fl
     slip = length_slip(motion)
     # Every length in millimetres is no one key's slip: the warning asks to divide them all, and a μl given for
     # them is refused at its own key.
-    if slip is None or not slip.alone or not across_mm / 1000 <= largest_mm:
+    if slip is None or not slip.alone:
         return None
     value = list(slip.value) if isinstance(slip.value, tuple) else slip.value
-    return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm): {slip.meant}",
-                      value)
+    if across_mm / 1000 <= largest_mm:
+        return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm): "
+                          f"{slip.meant}", value)
+    # Larger than millimetres explain (a point typed a billion metres out): still the one length that stands alone
+    # beyond the rest is the key to change, where the drawing's scale would be drawn at a size no plan is read at.
+    return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm), even were it "
+                      "typed in millimetres: give it in metres, as the mechanism's other lengths are", value)
 
 
 def _farthest_point(mechanism: Mechanism) -> LengthSlip | None:

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from graphplan.cli import main
 
 CENTRAL_SLIDER_CRANK = """
@@ -70,3 +72,22 @@ def test_a_note_whose_reading_has_a_length_in_powers_of_ten_is_written(tmp_path,
     note = (out / "note.md").read_text(encoding="utf-8")
     omega = [line for line in note.splitlines() if line.startswith("- ω2 = ")]
     assert omega and omega[0].endswith("/1·10⁹ = 10 rad/s, counter-clockwise"), omega
+
+
+@pytest.mark.parametrize(("drawing", "drawn"), [
+    ("velocity_pole = 100.0", "draws the velocity plan of position 2"),
+    ("length_scale = 0.002", "draws the paths of the points"),
+], ids=["velocity-pole", "length-scale"])
+def test_a_point_typed_far_beyond_millimetres_is_refused_at_its_own_key(tmp_path, capsys, drawing, drawn) -> None:
+    """A drawing a named point swells past any paper is refused at that point's `at` where the length is
+    millimetres typed for metres; typed a billion metres out it was refused at the scale the scene gives instead
+    (drawing.velocity_pole: "give 1 (a 150 mm plan)"), a key the student never got wrong, which drew the plan's
+    every other vector as a dot.  The length that stands alone beyond the rest is still the one to change, and
+    nothing is written."""
+    scene = _scene(tmp_path, CENTRAL_SLIDER_CRANK.format(at=1e9) + f"[drawing]\n{drawing}\n")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    told = capsys.readouterr().err.strip().splitlines()[-1]
+    assert told.startswith("graphplan: error: points.S2.at: puts S2 1e+09 m from O"), told
+    assert drawn in told and "give it in metres" in told, told
+    assert not out.exists()
