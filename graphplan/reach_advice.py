@@ -66,7 +66,8 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
         if not ranges and (stopped := _stopped_nowhere(mechanism, error.group)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; the mechanism assembles "
-                                f"at no angle of link {driver.link}: {stopped}") from error
+                                f"at no angle of link {driver.link}: {stopped}{_placed_by(mechanism, error.group)}") \
+                from error
         # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
         if first is not None:
             advice = _reach_advice(driver.link, ranges, False, stopping, "the values")
@@ -76,6 +77,8 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
                                    runs=functools.partial(_swing_that_runs, rocking), also=changes)
             if driver.cyclic and ranges and (slipped := _slipped_digit(mechanism, error.group)) is not None:
                 advice += f"; or, if link {driver.link} is meant to turn round, check the lengths: {slipped}"
+        if not ranges:
+            advice += _placed_by(mechanism, error.group)
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
 
 
@@ -120,6 +123,18 @@ def _lengths_of(group: Group) -> Iterator[tuple[str, float, Callable[[float], Gr
 # A hundredth of a degree: the farthest or nearest a group reads off the sweep of the crank is then the true one to
 # some 10⁻¹⁰ of its lengths.
 _NOWHERE_SWEEP = 36000
+
+
+def _placed_by(mechanism: Mechanism, label: str) -> str:
+    """Where the group ``label`` joins a named point of an earlier link (a shaper's rod pinned at D, up the slotted
+    lever), the key that places it, told after the lengths to check: no length of the group's is wrong where that
+    point's ``at`` is, and nothing else names it.  Empty where the group joins only joints."""
+    group = next((group for group in mechanism.groups if group.label == label), None)
+    named = {spec.name: spec for spec in mechanism.scene.points}
+    placed = [named[joint] for joint in (group.known_joints() if group is not None else ()) if joint in named]
+    return "".join(f", and where {spec.where} places {spec.name}: at = {spec.at:g} m from {spec.start} toward "
+                   f"{spec.toward}" + (f", offset = {spec.offset:g} m to its left" if spec.offset else "")
+                   for spec in placed)
 
 
 def _stopped_nowhere(mechanism: Mechanism, label: str) -> str | None:

@@ -91,3 +91,22 @@ def test_a_point_typed_far_beyond_millimetres_is_refused_at_its_own_key(tmp_path
     assert told.startswith("graphplan: error: points.S2.at: puts S2 1e+09 m from O"), told
     assert drawn in told and "give it in metres" in told, told
     assert not out.exists()
+
+
+def test_a_rod_pinned_at_a_named_point_that_reaches_no_guide_names_the_points_key(tmp_path, capsys) -> None:
+    """The shaper's rod DE is pinned at D, a named point up the slotted lever (points.D, at = 0.65 m from C).
+    Typed a digit short, 0.065, D stays within 0.065 m of C, at least 0.64 − 0.065 = 0.575 m below the ram's guide,
+    which the 0.2 m rod cannot reach at any angle of the crank: the refusal said "check the lengths", none of which
+    is wrong, and named no key.  It names the key that places D, with its value."""
+    starter = tmp_path / "shaper.toml"
+    assert main(["new", "shaper", "--out", str(starter)]) == 0
+    text = starter.read_text(encoding="utf-8")
+    assert text.count('D  = { link = 4, from = "C", toward = "A", at = 0.65 }') == 1
+    scene = _scene(tmp_path, text.replace("at = 0.65 }", "at = 0.065 }"))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    told = capsys.readouterr().err.strip().splitlines()[-1]
+    assert told.startswith("graphplan: error: E cannot be assembled") and "assembles at no angle of link 2" in told
+    assert told.endswith("check the lengths, and where points.D places D: at = 0.065 m from C toward A"), told
+    assert not out.exists()
