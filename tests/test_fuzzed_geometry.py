@@ -11,6 +11,8 @@ import pytest
 
 from graphplan.cli import main
 
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+
 CENTRAL_SLIDER_CRANK = """
 [scene]
 title = "A central slider-crank, its crank's centre of mass typed {at} m out"
@@ -110,3 +112,20 @@ def test_a_rod_pinned_at_a_named_point_that_reaches_no_guide_names_the_points_ke
     assert told.startswith("graphplan: error: E cannot be assembled") and "assembles at no angle of link 2" in told
     assert told.endswith("check the lengths, and where points.D places D: at = 0.065 m from C toward A"), told
     assert not out.exists()
+
+
+def test_a_force_polygon_lettered_in_russian_is_laid_out_on_its_sheets(tmp_path, capsys) -> None:
+    """The force polygon's names were looked up among its arrows by the vector's name (Fu4) where the name as
+    lettered is the locale's (Fи4 in Russian): with the triad-with-slider's S4 moved 5 % nearer C, the sheets laid
+    out at a larger μl set Fи4 on a leader out of a sliver, and the run ended in KeyError: 'Fи4' (no file written).
+    The sheets are drawn, and the polygon of the triad's position 8 names the inertia force of link 4 as Fи4."""
+    fixture = FIXTURES / "triad_with_slider.toml"
+    text = fixture.read_text(encoding="utf-8")
+    typed = 'S4 = { link = 4, from = "C", toward = "D", at = 0.07 }'
+    assert text.count(typed) == 1
+    scene = _scene(tmp_path, text.replace(typed, typed.replace("0.07", f"{0.07 * 0.95:g}")))
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--locale", "ru", "--only", "sheets"]) == 0
+    sheets = [path.read_text(encoding="utf-8") for path in sorted(out.glob("sheet_*.svg"))]
+    assert sheets and any(">Fи4<" in sheet for sheet in sheets)
+    assert not any(">Fu4<" in sheet for sheet in sheets)

@@ -320,7 +320,8 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     drawn = obstacles_of(figure)
     shafts = [LineString((arrow.start, arrow.end)) for _, arrow in named]
-    shaft_of = {vector.name: shaft for (vector, _), shaft in zip(named, shafts)}
+    # By the name as lettered, which the anchors carry: a locale's symbol (Fи4 in Russian) is not the vector's Fi4.
+    shaft_of = {anchor.text: shaft for anchor, shaft in zip(anchors, shafts)}
     vector_of = {id(anchor): vector for anchor, (vector, _) in zip(anchors, named)}
     unnamed: list[Anchor] = []
     kept: list[Anchor] = []
