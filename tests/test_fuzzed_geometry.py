@@ -5,6 +5,7 @@ and the answer a student should get instead."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -129,3 +130,25 @@ def test_a_force_polygon_lettered_in_russian_is_laid_out_on_its_sheets(tmp_path,
     sheets = [path.read_text(encoding="utf-8") for path in sorted(out.glob("sheet_*.svg"))]
     assert sheets and any(">Fи4<" in sheet for sheet in sheets)
     assert not any(">Fu4<" in sheet for sheet in sheets)
+
+
+def test_an_upright_flywheel_tangent_keeps_its_letter_by_the_diagram(tmp_path, capsys) -> None:
+    """The shaper's slotted lever given J = 1e9 kg·m² (warned as g·mm² typed for kg·m²) makes the machine's own Je
+    so large that the energy–mass diagram's tangents stand all but upright: its letter a, set above the tangent over
+    the letter's width, went up with the tangent's slope far past where the tangent is drawn, to 17 881 201 mm, so
+    that dynamics.svg was 17.9 km tall and the scene's A1 sheets were refused at drawing.sheet ("sheet = none"), a
+    key that was right.  The letter stays by the tangent as drawn: the scene checks, and the drawing is less than an
+    A1 sheet (841 mm) tall."""
+    starter = tmp_path / "shaper.toml"
+    assert main(["new", "shaper", "--out", str(starter)]) == 0
+    text = starter.read_text(encoding="utf-8")
+    assert text.count("inertia = 0.65") == 1
+    scene = _scene(tmp_path, text.replace("inertia = 0.65", "inertia = 1.0e9"))
+    assert main(["check", str(scene)]) == 0
+    told = capsys.readouterr()
+    assert "links.4.inertia = 1e+09 kg·m²" in told.out + told.err
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+    head = (out / "dynamics.svg").read_text(encoding="utf-8")[:400]
+    height = float(re.search(r'height="([0-9.]+)mm"', head).group(1))
+    assert height < 841.0, height

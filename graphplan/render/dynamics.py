@@ -575,7 +575,9 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                 items.append(dot_marker((0.0, intercept), 0.7, _TANGENT.colour))
                 # Above a's tangent and below b's over the letter's whole width: set off the intercept alone, a
                 # steep tangent (ψ of 30° and more, a fast machine's) ran through the letter it names.
-                rise = slope * (1.2 + text_width(letter, LABEL))
+                # Only as far as the tangent is drawn: past its end there is no line to clear, and a tangent all
+                # but upright (a machine's own Je far beyond the flywheel's) set the letter kilometres up.
+                rise = slope * min(1.2 + text_width(letter, LABEL), end_x)
                 letter_y = intercept + max(rise, 0.0) + 1.2 if letter == "a" else intercept + min(rise, 0.0) - LABEL - 1.2
                 items.append(Text((1.2, letter_y), letter, LABEL, "start", _TANGENT.colour))
             top_mm, bottom_mm = max(top_mm, line[0][1], line[1][1]), min(bottom_mm, line[0][1], line[1][1])
