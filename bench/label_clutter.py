@@ -55,7 +55,10 @@ from graphplan.render import (
 # The modules that letter with the placer (the diagrams place their numbers themselves since 0794f7b); the force
 # sheet's drawings letter through force_marks, and its polygons and lever measure their labels against their lines.
 CALLERS = (*(module for module in (balancing, diagrams, dynamics, plans, positions) if hasattr(module, "place_labels")),
-           force_marks, force_polygons, force_lever)
+           force_marks, force_polygons, force_lever,
+           # labels itself: the plan of positions and the plan sheets' mechanism letter through its
+           # place_breaking_thin_lines, which asks its own placer.
+           labels)
 LOCALES = ("en", "ru")
 
 
@@ -96,12 +99,16 @@ LINES: dict[int, tuple] = {}
 DOT_RADIUS = 1.5
 
 
+# The labels module's own, kept: wrapped in it too, the recorder would call itself.
+_OBSTACLES_OF = labels.obstacles_of
+
+
 def recording_obstacles_of(items):
     """:func:`labels.obstacles_of`, noting which of its shapes are drawn lines: a polyline, an arrow (its shaft and
     head), a filled block's or a circle's outline; not a text's box, a point's dot, nor a spot a caller adds."""
     shapes = []
     for item in items:
-        own = labels.obstacles_of([item])
+        own = _OBSTACLES_OF([item])
         for shape in own:
             if isinstance(item, labels.Text) or (isinstance(item, labels.Circle) and item.radius < DOT_RADIUS):
                 continue

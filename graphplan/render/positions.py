@@ -29,16 +29,15 @@ from . import dimensions, lettering
 from .labels import (
     LABEL_GAP_MM,
     LABEL_SPACING,
-    LEADER_GAP,
     Anchor,
-    Placement,
+    breakable,
     broken_under,
     ink_of,
     obstacles_of,
-    place_labels,
-    remembered,
+    place_breaking_thin_lines,
     spaced_box,
     text_box,
+    without,
 )
 from .linkage import (
     GROUND_MARGIN_MM,
@@ -149,7 +148,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     swing_texts: list[Text] = []
     for travel in plan.travels:  # each kept clear of those before it
         items, labels_of = _travel_dimension(plan, travel, paper, outlines,
-                                             every + loaded + bold + frame + paths + dimension, _breakable(every))
+                                             every + loaded + bold + frame + paths + dimension, breakable(every))
         dimension += items
         swing_labels += labels_of
         swing_texts += [item for item in items if travel.swing and isinstance(item, Text)]
@@ -174,15 +173,15 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, bold_lines + frame,
-                                                  bold_ink + ink_of(frame), number_leaders, numbers,
-                                                  _crowded_pins(plan, paper))
+    labels, breaking = place_breaking_thin_lines(anchors + swing_labels, every, drawn, bold_lines + frame,
+                                                 bold_ink + ink_of(frame), number_leaders, numbers,
+                                                 _crowded_pins(plan, paper))
     # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number),
     # and so does a position's number round the crank's circle, set clear of the bold lines alone: the Scotch yoke's
     # 10 and 4 stood struck through by the ends of its slot at those positions.
-    every = broken_under(every, breaking + swing_texts + numbers, _breakable(every))
+    every = broken_under(every, breaking + swing_texts + numbers, breakable(every))
     # A point's path too: the crank-rocker's 5 stood on the dashed path of B.
-    paths = broken_under(paths, numbers, _breakable(paths))
+    paths = broken_under(paths, numbers, breakable(paths))
     # Under the bold links and the frame: the pins they draw stand over the ends of the springs and cylinders.
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)),
               *([Layer("load-links", tuple(loaded))] if loaded else []), Layer("extremes", tuple(bold)),
@@ -196,149 +195,6 @@ def layout(plan: PositionsPlan) -> list[Layer]:
                                          "start", weight="bold"),
                                     Text((xmin, scale_line), plan.caption, CAPTION_SIZE, "start"))))
     return layers
-
-
-def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], drawn: list[Primitive],
-                               inked: list[Primitive], ink: list[BaseGeometry], number_leaders: list[Polyline],
-                               numbers: list[Text], pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
-    """The labels placed clear of the drawn lines, and those of them that the thin lines of the other positions
-    break under (:func:`~graphplan.render.labels.broken_under`).
-
-    The ``inked`` lines among ``drawn`` (the extremes, the springs and cylinders, the travel's dimension, and the
-    frame's symbols, whose thin hatching is never broken under a label either) are kept clear of as wide as their
-    strokes draw them (``ink``, :func:`~graphplan.render.labels.ink_of`), as the numbers round the crank's circle are: clear of
-    their middles alone, the Scotch yoke's A′ stood 0.2 mm into the ink of the 0.7 mm block round its top pin, S4 half
-    a millimetre into its 1 mm rod, and the engine's O on its pivot's hatching.  A leader is kept from running beside
-    a line, nearly along it (``place_labels``' ``leaders_apart``): the slider driven mechanism's G was led down
-    beside a stroke of its guide's hatching, reading as one more, and a crank's pivot O led off along the thin lines
-    of the crank's positions.  The labels of one point (a crowded crank pin's number and its primed letters) then
-    stand each in a direction of its own from it (:func:`_each_in_its_own_direction`).
-
-    Where the thin lines leave no clear spot near a point (the crank's pivot, that every crank position's line
-    leaves; a swing's ψ on its arc, across the rocker's positions; a centre of mass among the links' thin
-    outlines), a draughtsman letters it beside its point all the same, clear of the bold lines and the frame's
-    symbols, and breaks the thin lines under the letters, as ГОСТ 2.307 breaks thin lines under a dimension's
-    number: set farther out on a leader it was read as naming something else.  Those labels are placed again
-    without the thin lines, then the rest round them; their leaders, which the thin lines are not broken under, kept
-    from running beside those lines all the same (the Scotch yoke's O was led out along the thin line of a position
-    of its rod)."""
-    obstacles = obstacles_of(_without(drawn, inked) + number_leaders) + ink + pins
-    first = _each_in_its_own_direction(
-        remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False, leaders_apart=True),
-        anchors, obstacles, numbers)
-    lines = [shape for shape in obstacles_of(drawn + number_leaders + list(first.leaders))
-             if shape.geom_type == "LineString"]
-    tree = STRtree(lines)
-    breaking = [index for index, text in enumerate(first.texts)
-                if len(tree.query(text_box(text), predicate="intersects"))]
-    if not breaking:
-        return first, []
-    over = remembered(place_labels, [anchors[index] for index in breaking],
-                      obstacles_of(_without(drawn, _breakable(every) + inked) + number_leaders) + ink + pins,
-                      standing=numbers, leaders_apart=obstacles_of(_breakable(every)))
-    rest = [index for index in range(len(anchors)) if index not in breaking]
-    others = remembered(place_labels, [anchors[index] for index in rest],
-                        obstacles + obstacles_of(list(over.leaders)), standing=[*numbers, *over.texts],
-                        leaders_apart=True)
-    texts = dict(zip(breaking, over.texts)) | dict(zip(rest, others.texts))
-    return Placement(tuple(texts[index] for index in range(len(anchors))), over.leaders + others.leaders), \
-        list(over.texts)
-
-
-# Two labels of one point stand apart, seen from it, by this many of their letters' heights: the line from the point
-# to one (its leader, or where a leader would run) keeps this far from the other.
-_SIGHT_CLEARANCE = 1.0
-# How far out the shadow of a label reaches from its point (mm), seen from which another label would stand behind it.
-_SHADOW_MM = 60.0
-
-
-def _each_in_its_own_direction(placement: Placement, anchors: list[Anchor], obstacles: list[BaseGeometry],
-                               standing: list[Text]) -> Placement:
-    """``placement`` with each label that stands, seen from its point, behind or in front of another label of the same
-    point (their directions from it overlapping, or the line from the point to one running within a letter's height
-    of the other) placed again alone, out of the others' shadows, where a spot clear of everything is: the leader to
-    one would run past the other, reading as leading to it (the Scotch yoke's top pin, its number 7 and its letters
-    A′ and B′, the 7 and B′ one behind the other up to the left of it, B′'s leader passing under the 7).  The placer
-    costs what a label covers, and two labels of one point stand a label's width apart there all the same."""
-    texts, leaders = list(placement.texts), list(placement.leaders)
-    by_point: dict[tuple[float, float], list[int]] = {}
-    for index, anchor in enumerate(anchors):
-        by_point.setdefault((round(anchor.at[0], 6), round(anchor.at[1], 6)), []).append(index)
-    for point, group in by_point.items():
-        for index in group[1:]:
-            others = [k for k in group if k != index]
-            clearance = _SIGHT_CLEARANCE * anchors[index].size
-            if not any(_one_behind_another(text_box(texts[index]), text_box(texts[k]), point, clearance)
-                       for k in others):
-                continue
-            own_leader = _leader_of(leaders, texts[index])
-            around = [leader for leader in leaders if leader is not own_leader]
-            shadows = [_shadow(text_box(texts[k]), point, clearance) for k in others]
-            kept_off = [*obstacles, *obstacles_of(around), *shadows]
-            again = remembered(place_labels, [anchors[index]], kept_off,
-                               standing=[*standing, *(text for k, text in enumerate(texts) if k != index)],
-                               reach_farther=False, leaders_apart=True)
-            (moved,) = again.texts
-            box = text_box(moved)
-            if (any(box.intersects(shape) for shape in kept_off)
-                    or any(box.intersects(spaced_box(text)) for k, text in enumerate(texts) if k != index)
-                    or any(leader.intersects(spaced_box(text)) for leader in obstacles_of(list(again.leaders))
-                           for k, text in enumerate(texts) if k != index)):
-                continue  # nowhere clear: left where the placer set it
-            texts[index] = moved
-            leaders = around + list(again.leaders)
-    return Placement(tuple(texts), tuple(leaders))
-
-
-def _one_behind_another(one: BaseGeometry, other: BaseGeometry, point: tuple[float, float], clearance: float) -> bool:
-    """Whether the boxes ``one`` and ``other`` stand one behind the other seen from ``point``: their spans of
-    direction from it overlapping, or the line from the point to the nearest side of either running within
-    ``clearance`` of the other."""
-    (a0, a1), (b0, b1) = _span(one, point), _span(other, point)
-    apart = math.remainder((b0 + b1) / 2 - (a0 + a1) / 2, math.tau)
-    if abs(apart) <= (a1 - a0) / 2 + (b1 - b0) / 2:
-        return True
-    seen = ShapelyPoint(point)
-    return any(shapely.shortest_line(seen, box).distance(far) < clearance for box, far in ((one, other), (other, one)))
-
-
-def _span(box: BaseGeometry, point: tuple[float, float]) -> tuple[float, float]:
-    """The least and greatest direction (radians) from ``point`` to the corners of ``box``, which stands beside it."""
-    x0, y0, x1, y1 = box.bounds
-    middle = math.atan2((y0 + y1) / 2 - point[1], (x0 + x1) / 2 - point[0])
-    turns = [math.remainder(math.atan2(y - point[1], x - point[0]) - middle, math.tau)
-             for x in (x0, x1) for y in (y0, y1)]
-    return middle + min(turns), middle + max(turns)
-
-
-def _shadow(box: BaseGeometry, point: tuple[float, float], clearance: float) -> BaseGeometry:
-    """Where, seen from ``point``, a label would stand behind or in front of the label of ``box``: the wedge from the
-    point through the box's corners, out to :data:`_SHADOW_MM`, and the box grown by ``clearance`` (the line to a
-    label there would run past it)."""
-    x0, y0, x1, y1 = box.bounds
-    corners = [(x, y) for x in (x0, x1) for y in (y0, y1)]
-    reach = [(point[0] + (x - point[0]) * _SHADOW_MM / math.dist((x, y), point),
-              point[1] + (y - point[1]) * _SHADOW_MM / math.dist((x, y), point)) for x, y in corners]
-    return shapely.union(shapely.MultiPoint([point, *corners, *reach]).convex_hull, box.buffer(clearance))
-
-
-def _leader_of(leaders: list[Polyline], text: Text) -> Polyline | None:
-    """The leader of ``leaders`` that ends at the label ``text`` (:data:`~graphplan.render.labels.LEADER_GAP` short
-    of its box), if any."""
-    box = text_box(text)
-    ends = [leader for leader in leaders if ShapelyPoint(leader.points[-1]).distance(box) < 2 * LEADER_GAP]
-    return ends[0] if ends else None
-
-
-def _without(items: list[Primitive], left_out: list[Primitive]) -> list[Primitive]:
-    """``items`` but those of ``left_out`` (the same objects): the drawing's solid lines without its thin ones."""
-    out = {id(item) for item in left_out}
-    return [item for item in items if id(item) not in out]
-
-
-def _breakable(items: list[Primitive]) -> list[Polyline]:
-    """The lines of ``items`` that a label may break: open or unfilled outlines (not a slider's block)."""
-    return [item for item in items if isinstance(item, Polyline) and not item.fill and len(item.points) >= 2]
 
 
 def _mechanism_at(motion: Motion, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
@@ -424,7 +280,7 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
     sweep = cmath.phase(ends[1] / ends[0])
 
     middle = start + sweep / 2
-    solid = STRtree(obstacles_of(_without(drawn, thin)))
+    solid = STRtree(obstacles_of(without(drawn, thin)))
 
     def tried(share: float) -> tuple[tuple[bool, int, int], float, list[Primitive], tuple[int, float]]:
         """A swing's arc at ``share`` of the lever's drawn length: its cost, its radius, the arc, and the fewest
