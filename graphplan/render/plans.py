@@ -30,7 +30,18 @@ from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
 from . import lettering
-from .labels import Anchor, obstacles_and_shafts, obstacles_of, open_direction, place_labels, remembered
+from .labels import (
+    Anchor,
+    breakable,
+    broken_under,
+    obstacles_and_shafts,
+    obstacles_of,
+    open_direction,
+    place_breaking_thin_lines,
+    place_labels,
+    remembered,
+    without,
+)
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -290,7 +301,18 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn))
                for name in names]
     anchors += [Anchor(paper(r), name, LETTER_SIZE, open_direction(paper(r), drawn)) for name, r in special_at.items()]
-    labels = remembered(place_labels, anchors + turn_anchors, obstacles_of(drawn))
+    # As the plan of positions letters its bold extremes: clear of the ink of the links, the springs and cylinders,
+    # the frame's pivots and the senses' arrows, as wide as each is drawn (kept off their middles alone, the slotted
+    # levers' and the tangent mechanism's A stood with up to 0.3 mm² of its box on the outline of its 0.7 mm block,
+    # and an ω on the arrow of a point's velocity), and where the thin lines (the ground's hatching, a guide's line,
+    # the run-on lines to Assur's points) leave a letter no spot by its point, set there all the same with those
+    # lines broken under it, not pushed out on a leader.
+    thin = breakable(frame) + breakable(special)
+    bold = without(drawn, thin + marks)
+    ink, _ = obstacles_and_shafts(bold, shafts_inked=True, lines_inked=True)
+    labels, breaking = place_breaking_thin_lines(anchors + turn_anchors, thin, drawn, bold, ink, [], [], [])
+    frame = broken_under(frame, breaking, thin)
+    marks = broken_under(marks, breaking, thin)
     # Under the frame and the links: their pins stand over the ends of the springs and cylinders.
     return [*([Layer("mechanism-load-links", tuple(loaded))] if loaded else []),
             Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
