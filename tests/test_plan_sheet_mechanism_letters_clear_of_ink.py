@@ -35,7 +35,7 @@ LINE_LAYERS = ("mechanism-links", "mechanism-load-links", "mechanism-frame", "me
 
 # Blocks round pins (the slotted levers, the tangent mechanism), a fan of links and arrows (the triad, the six-bar).
 FIXTURES = ["quick_return_slotted_lever", "shaper_six_bar", "tangent_mechanism_prp", "triad_class_iii",
-            "stephenson_six_bar"]
+            "stephenson_six_bar", "engine_slider_crank"]
 
 
 def _points(d: str) -> list[tuple[float, float]]:
@@ -100,6 +100,28 @@ def test_no_mechanism_letter_stands_on_a_bold_lines_ink(written_plans):
         root = ET.parse(plan).getroot()
         assert letter_boxes(root) and bold_lines(root), f"{plan.name}: no letters or lines read"
         assert letters_on_ink(root) == [], plan.name
+
+
+def blocks(root: ET.Element) -> list[shapely.Geometry]:
+    """The slider blocks round the mechanism's pins: each filled four-cornered outline of its links."""
+    return [shapely.Polygon(_points(path.get("d"))) for layer in root if layer.get("id") == "mechanism-links"
+            for path in layer.iter(f"{SVG}path")
+            if path.get("fill", "none") != "none" and len(_points(path.get("d"))) == 4]
+
+
+def test_a_block_pins_letter_stands_beside_the_block_not_led_out_of_it(written_plans):
+    # Clear of the block's ink, the letter of the pin inside it stands beside the block, as a draughtsman letters it:
+    # no leader starts within a block (the slotted levers' A, the shaper's E, the tangent mechanism's B stood on
+    # leaders out of theirs), and every block has a letter within a letter's height of its outline.
+    for plan in written_plans:
+        root = ET.parse(plan).getroot()
+        leaders = [shapely.Point(_points(path.get("d"))[0]) for layer in root if layer.get("id") == "mechanism-leaders"
+                   for path in layer.iter(f"{SVG}path")]
+        boxes = [box for _, box in letter_boxes(root)]
+        for block in blocks(root):
+            assert not [start for start in leaders if block.contains(start)], plan.name
+            height = min(box.bounds[3] - box.bounds[1] for box in boxes) / 1.45
+            assert min(block.exterior.distance(box) for box in boxes) < height, plan.name
 
 
 def test_a_letter_on_a_links_edge_is_on_its_ink_though_clear_of_its_middle(written_plans):

@@ -58,6 +58,11 @@ class Anchor:
     # A point and a distance (mm) the label's box keeps beyond wherever that costs less than lines covered
     # (``KEPT_OFF``): a lever's pole, in whose reach an arm's name is read among the loads' names there.  None: none.
     keep_off: tuple[tuple[float, float], float] | None = None
+    # How far the symbol drawn round the point reaches from it across its narrower side (mm): a slider block's half
+    # height and half its outline's stroke.  Its spots stand that much farther out, a label beside them read as
+    # naming the point without a leader, as a draughtsman letters a block's pin beside the block: the rings from the
+    # pin itself left it no spot clear of the block's ink but on a leader out of the block.
+    symbol_mm: float = 0.0
 
 
 def text_box(text: Text) -> BaseGeometry:
@@ -509,7 +514,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         half_widths = np.array([text_width(anchor.text, anchor.size) for anchor in anchors], dtype=float)[:, None] / 2
         prefer = np.array([anchor.prefer for anchor in anchors], dtype=float)[:, None]
         # _candidates', for every anchor: a row each.
-        radii = gap + np.array(shares)[None, :] * sizes
+        symbols = np.array([anchor.symbol_mm for anchor in anchors], dtype=float)[:, None]
+        radii = gap + symbols + np.array(shares)[None, :] * sizes
         ring, order = _rings_and_orders(len(shares), 16)
         direction = prefer + _turns(16)[order] * math.pi / 8
         x, y = set_out(at[:, :1], at[:, 1:], np.cos(direction), np.sin(direction), radii[:, ring], half_widths, sizes)
@@ -882,7 +888,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             lying = [where[k][2] > 0 for k in (index, *neighbours)]
             covering = sum(where[k][2] for k in (index, *neighbours))
             reaches = {k: max(leader_lines[k].length if k in leader_lines else 0.0,
-                              gap + reach_share * anchors[k].size) for k in neighbours}
+                              gap + anchors[k].symbol_mm + reach_share * anchors[k].size) for k in neighbours}
             put(index, spot, best, "room")
             for k in neighbours:
                 place(k)
@@ -1193,7 +1199,7 @@ def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...], direction
     A box is (xmin, ymin, xmax, ymax) as :func:`text_extent` gives it.
     """
     width = text_width(anchor.text, anchor.size)
-    radii = np.array([gap + share * anchor.size for share in shares])
+    radii = np.array([gap + anchor.symbol_mm + share * anchor.size for share in shares])
     half = directions // 2
     turns = _turns(directions)
     ring, order = _rings_and_orders(len(radii), directions)

@@ -20,6 +20,7 @@ from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from .primitives import (
+    BLOCK_HEIGHT_MM,
     LEAD_PAST_PIN_MM,
     MAIN,
     PIN_RADIUS_MM,
@@ -65,6 +66,16 @@ def outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]
         if slide.guide in outlines and slide.joint not in outlines[slide.guide]:
             outlines[slide.guide].append(slide.joint)
     return outlines
+
+
+# How far a bold slider block reaches from its pin across its slide (mm), its outline's ink included: a letter of the
+# pin stands beyond it (labels.Anchor's symbol_mm).
+BLOCK_REACH_MM = BLOCK_HEIGHT_MM / 2 + MAIN.width / 2
+
+
+def block_pins(motion: Motion) -> set[str]:
+    """The points a slider block is drawn round (:func:`links_at`): each slide's joint."""
+    return {slide.joint for slide in motion.slides}
 
 
 def links_at(motion: Motion, index: int, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,

@@ -43,9 +43,11 @@ from .labels import (
     without,
 )
 from .linkage import (
+    BLOCK_REACH_MM,
     GROUND_MARGIN_MM,
     Paper,
     along_loads,
+    block_pins,
     frame_guide,
     frame_pivots,
     frame_points_along,
@@ -298,8 +300,9 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     drawn = loaded + links + frame + marks + senses
     # Points fixed on a link only: an RPR lever's point under the block would just repeat a label.
     names = [name for name in motion.points if any(name in on for on in mechanism.fixed_on.values())]
-    anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn))
-               for name in names]
+    blocked = block_pins(motion)
+    anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn),
+                      symbol_mm=BLOCK_REACH_MM if name in blocked else 0.0) for name in names]
     anchors += [Anchor(paper(r), name, LETTER_SIZE, open_direction(paper(r), drawn)) for name, r in special_at.items()]
     # As the plan of positions letters its bold extremes: clear of the ink of the links, the springs and cylinders,
     # the frame's pivots and the senses' arrows, as wide as each is drawn (kept off their middles alone, the slotted

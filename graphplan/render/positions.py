@@ -40,9 +40,11 @@ from .labels import (
     without,
 )
 from .linkage import (
+    BLOCK_REACH_MM,
     GROUND_MARGIN_MM,
     Paper,
     along_loads,
+    block_pins,
     frame_guide,
     frame_pivots,
     frame_points_along,
@@ -538,6 +540,7 @@ def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> l
     named = {spec.name for spec in plan.mechanism.scene.points}
     centres = {spec.centre for spec in plan.mechanism.scene.links.values()} & named
     drawn = {name for names in plan.mechanism.fixed_on.values() for name in names} - centres
+    blocked = block_pins(motion)
     anchors = []
     for index, label in enumerate(plan.extremes):
         if index >= motion.count or not (label or plan.working_extremes):
@@ -555,7 +558,8 @@ def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> l
         for name in moving:
             r = complex(at(motion.points[name].r, index))
             away = r - middle
-            anchors.append(Anchor(paper(r), f"{name}′", _LETTER_SIZE, math.atan2(away.imag, away.real) if away else math.pi / 2))
+            anchors.append(Anchor(paper(r), f"{name}′", _LETTER_SIZE, math.atan2(away.imag, away.real) if away else math.pi / 2,
+                                  symbol_mm=BLOCK_REACH_MM if name in blocked else 0.0))
     return anchors
 
 
@@ -566,11 +570,13 @@ def _point_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     drawn = {name for names in plan.mechanism.fixed_on.values() for name in names}
     names = [name for name in motion.points if name in drawn]
     centroid = sum(complex(at(motion.points[n].r, 0)) for n in names) / len(names)
+    blocked = block_pins(motion)
     anchors = []
     for name in names:
         r = complex(at(motion.points[name].r, 0))
         away = r - centroid
-        anchors.append(Anchor(paper(r), name, _LETTER_SIZE, math.atan2(away.imag, away.real) if away else math.pi / 2))
+        anchors.append(Anchor(paper(r), name, _LETTER_SIZE, math.atan2(away.imag, away.real) if away else math.pi / 2,
+                              symbol_mm=BLOCK_REACH_MM if name in blocked else 0.0))
     return anchors
 
 

@@ -191,7 +191,12 @@ def pin(at: Point, radius: float = PIN_RADIUS_MM) -> Circle:
     return Circle(at, radius, MAIN, "white")
 
 
-def slider_block(at: Point, angle: float, length: float = 10.0, height: float = 5.0,
+# A slider block's length along its slide and its height across it (mm).
+BLOCK_LENGTH_MM = 10.0
+BLOCK_HEIGHT_MM = 5.0
+
+
+def slider_block(at: Point, angle: float, length: float = BLOCK_LENGTH_MM, height: float = BLOCK_HEIGHT_MM,
                  stroke: Stroke = MAIN) -> Polyline:
     """A slider block centred at ``at`` with its long side along ``angle``."""
     half_l, half_h = length / 2, height / 2
