@@ -20,6 +20,7 @@ from drawn_lines import stroked_shapes
 from sheet_texts import box, texts
 
 from graphplan.cli import main
+from graphplan.render.linkage import BLOCK_REACH_MM
 
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"
@@ -58,9 +59,10 @@ def _segments(root: ET.Element, groups: set[str]) -> list[tuple[shapely.LineStri
 
 def test_the_scotch_yokes_a_prime_stands_near_its_top_pin_clear_of_the_ink(tmp_path):
     """At the yoke's top extreme (φ = 90°, r = 75 mm straight above O) the crank pin carries the number 7 and the
-    letters A′ and B′, inside the slider blocks drawn round it.  A′ stands within three of its letters' heights of
-    the pin, on the ink of no line (it stood on a 7 mm leader 8.5 mm off, down across the blocks, after reaching out
-    from a clear spot near the pin to a dearer one)."""
+    letters A′ and B′, inside the slider blocks drawn round it.  A′ stands above the pin, within three of its
+    letters' heights of the blocks' edge (where a block's pin's spots begin, ``linkage.BLOCK_REACH_MM`` from it), on
+    the ink of no line (it stood on a 7 mm leader 8.5 mm off, down across the blocks, after reaching out from a clear
+    spot near the pin to a dearer one)."""
     source, root = _drawn("scotch_yoke", tmp_path)
     scale = float(re.search(r"μl = ([\d.]+) m/mm", source).group(1))
     reach = 0.075 / scale
@@ -73,7 +75,8 @@ def test_the_scotch_yokes_a_prime_stands_near_its_top_pin_clear_of_the_ink(tmp_p
     pin = shapely.Point(pivot[0], pivot[1] - reach)
     (label,) = _boxes(source, "A′")
     letter = label.bounds[3] - label.bounds[1]
-    assert label.distance(pin) < 3 * letter, f"A′ stands {label.distance(pin):.2f} mm from its pin"
+    assert label.distance(pin) < BLOCK_REACH_MM + 3 * letter, f"A′ stands {label.distance(pin):.2f} mm from its pin"
+    assert label.centroid.y < pin.y, "A′ stands below its pin, across the blocks"
     ink = shapely.STRtree(stroked_shapes(root, ("leaders", "labels", "caption")))
     assert not len(ink.query(label, predicate="intersects")), "A′ stands on a line's ink"
 
