@@ -186,9 +186,26 @@ def accepting(place):
     return placing
 
 
+def discarding(recorder: Recorder, discarded: set[int]):
+    """:func:`labels._each_in_its_own_direction`, noting the placements it asks of one label and then leaves undrawn:
+    a label it tries elsewhere, alone, and keeps where it stood when the new spot is no clearer."""
+    own = labels._each_in_its_own_direction
+
+    def each_in_its_own_direction(placement, *args, **kwargs):
+        start = len(recorder.calls)
+        kept = own(placement, *args, **kwargs)
+        discarded.update(start + number for number, (_, _, tried, _) in enumerate(recorder.calls[start:])
+                         if not set(tried.texts) <= set(kept.texts))
+        return kept
+
+    return each_in_its_own_direction
+
+
 def run_fixture(scene: Path, locale: str, place, out: Path) -> Clutter:
     recorder = Recorder(place)
-    wrapped = {"place_labels": recorder, "obstacles_of": recording_obstacles_of}
+    discarded: set[int] = set()
+    wrapped = {"place_labels": recorder, "obstacles_of": recording_obstacles_of,
+               "_each_in_its_own_direction": discarding(recorder, discarded)}
     originals = {(caller, name): getattr(caller, name) for caller in CALLERS for name in wrapped
                  if hasattr(caller, name)}
     try:
@@ -202,7 +219,7 @@ def run_fixture(scene: Path, locale: str, place, out: Path) -> Clutter:
         raise SystemExit(f"{scene.name} ({locale}): graphplan run exited with {code}")
     total = Clutter()
     for number, call in enumerate(recorder.calls):
-        if superseded(call, recorder.calls[number + 1:number + 2]):
+        if number in discarded or superseded(call, recorder.calls[number + 1:number + 2]):
             continue
         total.add(clutter_of(*call))
     total.seconds = sum(call[3] for call in recorder.calls)
