@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 import shapely
+from sheet_texts import layer_letter_boxes
 
 import graphplan
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
@@ -55,18 +56,7 @@ def plan_lines(root: ET.Element, kind: str) -> list[tuple[str, shapely.Geometry]
 
 def letter_boxes(root: ET.Element, kind: str) -> list[tuple[str, shapely.Geometry]]:
     """(text, box) of every letter of the plan ``kind``, in the SVG's y-down millimetres."""
-    boxes = []
-    for layer in root:
-        if layer.get("id") != f"{kind}-labels":
-            continue
-        for text in layer.findall(f"{SVG}text"):
-            words = "".join(text.itertext())
-            cap = float(text.get("font-size")) / FONT_SIZE_PER_CAP
-            width = text_width(words, cap, text.get("font-weight", "normal"))
-            x, baseline = float(text.get("x")), float(text.get("y"))
-            left = x - {"start": 0.0, "middle": width / 2, "end": width}[text.get("text-anchor", "start")]
-            boxes.append((words, shapely.box(left, baseline - 1.15 * cap, left + width, baseline + 0.3 * cap)))
-    return boxes
+    return layer_letter_boxes(root, f"{kind}-labels")
 
 
 def letters_on_ink(root: ET.Element) -> list[str]:

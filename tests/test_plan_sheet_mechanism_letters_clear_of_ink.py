@@ -20,6 +20,7 @@ from pathlib import Path
 
 import pytest
 import shapely
+from sheet_texts import layer_letter_boxes
 
 import graphplan
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
@@ -65,18 +66,7 @@ def bold_lines(root: ET.Element) -> list[tuple[str, shapely.Geometry]]:
 
 def letter_boxes(root: ET.Element) -> list[tuple[str, shapely.Geometry]]:
     """(text, box) of every letter and name of the mechanism, in the SVG's y-down millimetres."""
-    boxes = []
-    for layer in root:
-        if layer.get("id") != "mechanism-labels":
-            continue
-        for text in layer.findall(f"{SVG}text"):
-            words = "".join(text.itertext())
-            cap = float(text.get("font-size")) / FONT_SIZE_PER_CAP
-            width = text_width(words, cap, text.get("font-weight", "normal"))
-            x, baseline = float(text.get("x")), float(text.get("y"))
-            left = x - {"start": 0.0, "middle": width / 2, "end": width}[text.get("text-anchor", "start")]
-            boxes.append((words, shapely.box(left, baseline - 1.15 * cap, left + width, baseline + 0.3 * cap)))
-    return boxes
+    return layer_letter_boxes(root, "mechanism-labels")
 
 
 def letters_on_ink(root: ET.Element) -> list[str]:
