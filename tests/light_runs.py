@@ -41,3 +41,16 @@ def on_no_sheet(path: Path, folder: Path) -> Path:
     lighter = folder / path.name
     lighter.write_text(text if drawn else text + '\n[drawing]\nsheet = "none"\n', encoding="utf-8")
     return lighter
+
+
+def plan_sheets_alone(scene: Path, folder: Path) -> list[Path]:
+    """The plan sheets (plan_N.svg) of the scene at ``scene``, written in ``folder`` by a run of its velocity and
+    acceleration plans alone: the mechanism and both plans of each plan position, as a full run draws them."""
+    import graphplan
+    from graphplan.run import run
+
+    run(graphplan.load(scene), folder, only=["velocity", "acceleration"])
+    plans = sorted(folder.glob("plan_*.svg"))
+    assert plans, f"{scene.name}: the run wrote no plan"
+    return plans
+

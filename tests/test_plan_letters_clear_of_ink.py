@@ -17,11 +17,10 @@ from pathlib import Path
 
 import pytest
 import shapely
+from light_runs import plan_sheets_alone
 from sheet_texts import layer_letter_boxes
 
-import graphplan
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
-from graphplan.run import run
 
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"
@@ -73,11 +72,7 @@ def letters_on_ink(root: ET.Element) -> list[str]:
 
 @pytest.fixture(scope="module", params=FIXTURES)
 def written_plans(request, tmp_path_factory) -> list[Path]:
-    folder = tmp_path_factory.mktemp(request.param) / "out"
-    run(graphplan.load(ROOT / "fixtures" / f"{request.param}.toml"), folder, only=["velocity", "acceleration"])
-    plans = sorted(folder.glob("plan_*.svg"))
-    assert plans, f"{request.param}: the run wrote no plan"
-    return plans
+    return plan_sheets_alone(ROOT / "fixtures" / f"{request.param}.toml", tmp_path_factory.mktemp(request.param) / "out")
 
 
 def test_no_letter_stands_on_a_lines_ink(written_plans):

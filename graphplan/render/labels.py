@@ -77,12 +77,13 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     return obstacles_and_shafts(items)[0]
 
 
-def ink_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
+def ink_of(items: Sequence[Primitive], shafts_inked: bool = False) -> list[BaseGeometry]:
     """:func:`obstacles_of`'s shapes with each line as wide as its stroke draws it, and a filled shape grown by half its
     outline's stroke: for what is set clear of a few bold lines (a position's number round the crank's circle, the
     plan of positions' letters), where their middles alone let a number touch a 1 mm link's ink, and the outline of
-    a 0.7 mm slider block drawn round a pin left a letter beside the pin 0.15 mm into its ink."""
-    return obstacles_and_shafts(items, lines_inked=True)[0]
+    a 0.7 mm slider block drawn round a pin left a letter beside the pin 0.15 mm into its ink.  ``shafts_inked``: the
+    arrows' shafts too (:func:`obstacles_and_shafts`), for the plans' vectors and the senses' arrows."""
+    return obstacles_and_shafts(items, shafts_inked, lines_inked=True)[0]
 
 
 def obstacles_and_shafts(items: Sequence[Primitive], shafts_inked: bool = False,
@@ -1090,11 +1091,8 @@ def _pieces(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
     whole = np.array(shapes, dtype=object)
     kinds = shapely.get_type_id(whole)
     lines = np.flatnonzero((kinds == shapely.GeometryType.LINESTRING) | (kinds == shapely.GeometryType.LINEARRING))
-    ends, of_line = shapely.get_coordinates(whole[lines], return_index=True)
-    # Each vertex and the next of the same line; a segment of no length is a vertex of its neighbours.
-    segment = (of_line[:-1] == of_line[1:]) & np.any(ends[:-1] != ends[1:], axis=1)
-    owners = lines[of_line[:-1][segment]]
-    segments = shapely.linestrings(np.stack((ends[:-1][segment], ends[1:][segment]), axis=1))
+    segments, of_line, _ = _segments(whole[lines])
+    owners = lines[of_line]
     # A line that is one point, like any other shape, stays whole.  Found by a mask: np.setdiff1d asks numpy.ma
     # whether the indices are masked, and importing it costs a cold run some 30 ms.
     cut = np.zeros(len(whole), dtype=bool)
@@ -1115,11 +1113,17 @@ def _edges(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
     outlines = np.concatenate((whole[~areas], shapely.boundary(whole[areas])))
     parts = shapely.get_parts(outlines)
     parts = parts[shapely.get_type_id(parts) != shapely.GeometryType.POINT]
-    ends, of_part = shapely.get_coordinates(parts, return_index=True)
-    segment = (of_part[:-1] == of_part[1:]) & np.any(ends[:-1] != ends[1:], axis=1)
+    segments, _, along = _segments(parts)
+    return segments, along / np.hypot(*along.T)[:, None]
+
+
+def _segments(lines: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The straight segments of ``lines``, each vertex to the next of the same line (one of no length is a vertex of
+    its neighbours): the segments, the index in ``lines`` of the line each is of, and each one's run (end − start)."""
+    ends, of_line = shapely.get_coordinates(lines, return_index=True)
+    segment = (of_line[:-1] == of_line[1:]) & np.any(ends[:-1] != ends[1:], axis=1)
     starts, stops = ends[:-1][segment], ends[1:][segment]
-    along = stops - starts
-    return shapely.linestrings(np.stack((starts, stops), axis=1)), along / np.hypot(*along.T)[:, None]
+    return shapely.linestrings(np.stack((starts, stops), axis=1)), of_line[:-1][segment], stops - starts
 
 
 def _run_within(lines: np.ndarray, edges: np.ndarray, width: float) -> np.ndarray:

@@ -34,7 +34,7 @@ from .labels import (
     Anchor,
     breakable,
     broken_under,
-    obstacles_and_shafts,
+    ink_of,
     obstacles_of,
     open_direction,
     place_breaking_thin_lines,
@@ -312,7 +312,7 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     # lines broken under it, not pushed out on a leader.
     thin = breakable(frame) + breakable(special)
     bold = without(drawn, thin + marks)
-    ink, _ = obstacles_and_shafts(bold, shafts_inked=True, lines_inked=True)
+    ink = ink_of(bold, shafts_inked=True)
     labels, breaking = place_breaking_thin_lines(anchors + turn_anchors, thin, drawn, bold, ink, [], [], [])
     frame = broken_under(frame, breaking, thin)
     marks = broken_under(marks, breaking, thin)
@@ -435,7 +435,7 @@ def _plan_layers(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list
         anchors.append(Anchor(at, text, LETTER_SIZE, open_direction(at, actions + figures + vectors)))
     # Clear of the vectors' and lines' ink, as wide as each is drawn: kept off their middles alone, a letter stood
     # with its box on a 0.6 mm vector's edge (the Stephenson six-bar's g along pa, s2 on pa of most plans).
-    ink, _ = obstacles_and_shafts(drawn, shafts_inked=True, lines_inked=True)
+    ink = ink_of(drawn, shafts_inked=True)
     labels = remembered(place_labels, anchors, ink)
     return [Layer(f"{kind}-lines", tuple(actions + figures)), Layer(f"{kind}-vectors", tuple(vectors)),
             Layer(f"{kind}-points", tuple(dots)), Layer(f"{kind}-leaders", labels.leaders),
