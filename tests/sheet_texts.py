@@ -8,6 +8,15 @@ import re
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
 
 
+_RUN_TAG = re.compile(r"</?tspan[^>]*>")
+
+
+def flat(source: str) -> str:
+    """An SVG's ``source`` with each text's runs joined, as a reader reads its words: a symbol's index (R₁₂, written
+    ``R<tspan ...>12</tspan>``) and a mixed line's scripts run on, ``<text ...>R12</text>``."""
+    return _RUN_TAG.sub("", source)
+
+
 def texts(source: str) -> list[tuple[float, float, float, str, str]]:
     """(x, y, font size, anchor, text) of each text of an SVG's ``source``, its runs in a script's font joined."""
     found = []

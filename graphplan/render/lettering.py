@@ -70,6 +70,12 @@ def at_most(height: float) -> float:
     return max((size for size in SERIES if size <= height + 1e-9), default=height)
 
 
+def index_height(height: float) -> float:
+    """The height a symbol's index (R₁₂'s 12) is lettered at beside a symbol lettered at ``height``: the next height
+    of the series down, as GOST 2.304 letters indices; at the smallest height, that height (none is smaller)."""
+    return max((size for size in SERIES if size < height - 1e-9), default=height)
+
+
 def larger(height: float) -> float:
     """The next height of the series above ``height``; past the largest, √2 times it."""
     return next((size for size in SERIES if size > height + 1e-9), height * 2 ** 0.5)
@@ -77,5 +83,6 @@ def larger(height: float) -> float:
 
 __all__ = ["ARM_NAME", "AXIS_LABEL", "AXIS_NUMBER", "BLOCK_CORNER_LABEL", "BLOCK_DESIGNATION", "BLOCK_KIND",
            "BLOCK_LABEL", "BLOCK_NAME", "BLOCK_VALUE", "CAPTION", "CURVE_NUMBER", "DIMENSION", "LETTER", "NAME",
+           "index_height",
            "POSITIONS_LETTER", "POSITION_NUMBER", "SCALE", "SERIES", "SMALLEST", "SMALL_CAPTION", "TITLE", "at_most",
            "larger"]

@@ -59,6 +59,9 @@ class Text:
     colour: str = "black"
     weight: str = "normal"
     rotation: float = 0.0
+    # The text cut into its runs on the line, below it and above it (:mod:`graphplan.render.indices`), where it has
+    # a symbol's index to set; empty where it is written as it is.  Joined, the runs are ``text``.
+    runs: tuple[tuple[str, int], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -308,6 +311,12 @@ def em_width(text: str, weight: str = "normal") -> float:
     return max(sum(by_class for by_class, _ in widths), sum(as_set for _, as_set in widths))
 
 
+def set_width_em(text: str, weight: str = "normal") -> float:
+    """How wide DejaVu Sans sets ``text`` (em): where a run of a line starts that follows it.  A character the font
+    has no glyph for counts by its class."""
+    return sum(_character_widths(character, weight)[1] for character in text)
+
+
 @functools.lru_cache(maxsize=4096)
 def _character_widths(character: str, weight: str) -> tuple[float, float]:
     """:func:`em_width`'s two widths of ``character``: by its class, and as DejaVu Sans sets it.
@@ -340,7 +349,23 @@ def _dejavu_advances(weight: str):
         glyph = None if is_wide(character) else glyphs.get(ord(character))
         return None if glyph is None else metrics[glyph][0] / units
 
+    advance.font = font
     return advance
+
+
+@functools.lru_cache(maxsize=1024)
+def descent_em(text: str) -> float:
+    """How far ``text``'s lowest glyph reaches under the baseline in DejaVu Sans (em; 0 for none that does): how low
+    an index can be set and stay in its text's box."""
+    advance = _dejavu_advances("normal")
+    font = advance.font
+    glyphs, outlines, units = font.getBestCmap(), font["glyf"], font["head"].unitsPerEm
+    lowest = 0.0
+    for character in set(text):
+        glyph = None if is_wide(character) else glyphs.get(ord(character))
+        if glyph is not None and getattr(outlines[glyph], "numberOfContours", 0):
+            lowest = max(lowest, -outlines[glyph].yMin / units)
+    return lowest
 
 
 def text_extent(text: Text) -> tuple[float, float, float, float]:
@@ -467,14 +492,14 @@ def moved(item: Primitive, dx: float, dy: float) -> Primitive:
         return Arrow(shift(item.start), shift(item.end), item.stroke, item.head, item.key)
     if isinstance(item, Circle):
         return Circle(shift(item.centre), item.radius, item.stroke, item.fill)
-    return Text(shift(item.at), item.text, item.size, item.anchor, item.colour, item.weight, item.rotation)
+    return Text(shift(item.at), item.text, item.size, item.anchor, item.colour, item.weight, item.rotation, item.runs)
 
 
 # A point between two digits is a decimal point: no other text of a drawing puts one there.
 _DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 # The title block and ESKD's графа 26 hold what the user wrote (a designation ТММ.01.02, a date 21.11.2026): never
 # changed.
-_USER_LAYERS = ("title-block", "sheet-designation")
+USER_LAYERS = ("title-block", "sheet-designation")
 
 
 def decimal_marked(text: str, mark: str) -> str:
@@ -499,18 +524,20 @@ def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = 
                 return quoted.join(marked(part) for part in text.split(quoted))
         return decimal_marked(text, mark)
 
-    return [layer if layer.name in _USER_LAYERS else
+    return [layer if layer.name in USER_LAYERS else
             Layer(layer.name, tuple(replace(item, text=marked(item.text)) if isinstance(item, Text) else item
                                     for item in layer.items))
             for layer in layers]
 
 
 def in_language(layers: Sequence[Layer], locale: str, own_words: Iterable[str] = ()) -> list[Layer]:
-    """``layers`` with the decimal mark of ``locale``; the scene's ``own_words`` (``Scene.own_words``) as the user
-    wrote them."""
+    """``layers`` lettered as they are written: with the decimal mark of ``locale`` and their symbols' indices set
+    (:mod:`graphplan.render.indices`); the scene's ``own_words`` (``Scene.own_words``) as the user wrote them."""
     from ..locale import strings
+    from .indices import with_indices
 
-    return with_decimal_mark(layers, strings(locale)["decimal_mark"], own_words)
+    own_words = tuple(own_words)
+    return with_indices(with_decimal_mark(layers, strings(locale)["decimal_mark"], own_words), own_words)
 
 
 def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:

@@ -19,8 +19,12 @@ from .primitives import (
     Stroke,
     Text,
     bounds,
+    descent_em,
     has_wide,
+    set_width_em,
 )
+from .indices import ABOVE, BELOW, LINE
+from .lettering import index_height
 from .script_runs import is_mixed, script_runs, width_em
 
 # Latin, Greek and Cyrillic from DejaVu Sans; a viewer that falls back glyph by glyph takes
@@ -34,6 +38,45 @@ CJK_FONT_FAMILY = "Noto Sans CJK SC, Noto Sans CJK JP, DejaVu Sans, Noto Sans, s
 def font_family(text: str) -> str:
     """The font-family list for ``text``: CJK first when it has a character of East Asian width."""
     return CJK_FONT_FAMILY if has_wide(text) else FONT_FAMILY
+
+
+# An index and a component are lettered a height of the series smaller than their symbol (lettering.index_height),
+# this far (em of the line) under and over its baseline, inside the box the flat text was laid out in (its
+# descenders' depth under the baseline, its accents' height over it): an index that descends (Mу, ΣMp) is lowered
+# less.
+_LOWERED = {LINE: 0.0, BELOW: 0.2, ABOVE: -0.36}
+_BOX_DESCENT_EM = 0.3 / FONT_SIZE_PER_CAP
+
+
+def _scale(place: int, size: float) -> float:
+    """A run's lettering over its line's, for a line lettered at cap height ``size``."""
+    return 1.0 if place == LINE else index_height(size) / size
+
+
+def _lowered(run: str, place: int, size: float) -> float:
+    """How far under the line's baseline a run is set (em of the line; negative over it)."""
+    if place != BELOW:
+        return _LOWERED[place]
+    return min(_LOWERED[BELOW], _BOX_DESCENT_EM - _scale(place, size) * descent_em(run))
+
+
+def _segments(item: Text) -> tuple[tuple[str, bool, int], ...]:
+    """The runs a text is set in, each in one font and at one place (text, wide, place); empty where it is set whole,
+    in one font on the line."""
+    by_place = item.runs or ((item.text, LINE),)
+    segments = tuple((run, wide, place) for text, place in by_place for run, wide in script_runs(text))
+    return segments if item.runs or is_mixed(script_runs(item.text)) else ()
+
+
+def _width_em(segments: tuple[tuple[str, bool, int], ...], weight: str, size: float) -> float | None:
+    """How wide the segments are set (em of the line's font), or None where a CJK font's widths cannot be read."""
+    total = 0.0
+    for run, wide, place in segments:
+        width = width_em(((run, True),), weight) if wide else set_width_em(run, weight)
+        if width is None:
+            return None
+        total += width * _scale(place, size)
+    return total
 
 
 def _n(value: float) -> str:
@@ -85,19 +128,34 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
     def text(item: Text):
         x, y = xy(item.at)
         size = item.size * FONT_SIZE_PER_CAP
-        runs = script_runs(item.text)
-        width = width_em(runs, item.weight) if is_mixed(runs) else None
+        segments = _segments(item)
+        width = _width_em(segments, item.weight, item.size) if segments else None
         # The attributes gathered in the order they are written and set at once: svgwrite sets each in a call.
         if width is None:
             element = document.text(item.text, insert=(x, y))
             attributes = {"font-family": font_family(item.text), "text-anchor": item.anchor}
         else:
-            # Set from its start, run by run in each script's font: cairosvg would anchor every run on its own.
+            # Set run by run from its start, which the first run is placed at: cairosvg would anchor every run on its
+            # own.  The text keeps its anchor, where a reader of the SVG finds it, as for a text set whole.
             start = {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
-            element = document.text("", insert=(_n(float(x) + start), y))
-            attributes = {"font-family": CJK_FONT_FAMILY, "text-anchor": "start"}
-            for run, wide in runs:
-                element.add(document.tspan(run, font_family=CJK_FONT_FAMILY if wide else FONT_FAMILY))
+            element = document.text("", insert=(x, y))
+            mixed = has_wide(item.text)
+            attributes = {"font-family": CJK_FONT_FAMILY if mixed else FONT_FAMILY, "text-anchor": item.anchor}
+            lowered = 0.0
+            for number, (run, wide, place) in enumerate(segments):
+                span = document.tspan(run)
+                span.attribs["text-anchor"] = "start"
+                if number == 0:
+                    span.attribs["x"] = _n(float(x) + start)
+                if mixed:
+                    span.attribs["font-family"] = CJK_FONT_FAMILY if wide else FONT_FAMILY
+                if place != LINE:
+                    span.attribs["font-size"] = _n(size * _scale(place, item.size))
+                # A run's dy moves the line's pen from where the run before it left it.
+                if _lowered(run, place, item.size) != lowered:
+                    span.attribs["dy"] = _n((_lowered(run, place, item.size) - lowered) * size)
+                    lowered = _lowered(run, place, item.size)
+                element.add(span)
         attributes.update({"font-size": _n(size), "fill": item.colour})
         if item.weight != "normal":
             attributes["font-weight"] = item.weight

@@ -1,0 +1,97 @@
+"""A drawing's symbols with their indices set as the textbooks set them: R₁₂, ω₂, Fᵤ₂, R₁₄ with its τ above.
+
+The drawings letter and measure their symbols flat, as plain text allows (``R12``, ``Mu4′``, ``R14τ``, ``h7``); as
+the last step before a drawing is written, :func:`with_indices` cuts each of its texts into runs on the line, below it
+(an index) and above it (a component), and the SVG sets the runs below and above a size smaller.  The flat text stays
+what is measured: a run set smaller is narrower than the box it was laid out in, never wider.
+
+A symbol is what the note calls one (:mod:`graphplan.report.symbols`, shared so that a drawing and the note beside it
+index the same symbols) and the few shapes only the drawings letter: an arm (h7, hb), a numbered point of a plan or a
+mechanism (s2, n3, S2, σ6), a diagram's scale (μv, μφ), a rocker's swing (ψmax), a plane's angle (θL) and a velocity
+along a diagram's axis (vB).  The title block and the scene's own words (its title, the loads it names) are the user's
+text and stay as written.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from collections.abc import Collection, Iterable, Sequence
+
+from ..report.symbols import Symbol, pieces
+from .primitives import USER_LAYERS, Layer, Text
+
+#: A run's place: on the line, below it (an index) or above it (a component).
+LINE, BELOW, ABOVE = 0, -1, 1
+
+# The shapes the drawings letter and the note does not, each standing whole (no letter or digit either side).
+_DRAWING_SYMBOL = re.compile(
+    r"(?<![\w′″])(?:"
+    r"(?P<arm>h)(?P<arm_index>\d+|[bу]|[uи]\d+)"
+    r"|(?P<point>[A-Za-zσΣ])(?P<number>\d+)"
+    r"|(?P<scale>μ)(?P<quantity>[A-Za-zφψεωα])"
+    r"|(?P<swing>ψ)(?P<extreme>max|min)"
+    r"|(?P<angle>θ)(?P<plane>[A-Z])"
+    r"|(?P<speed>v)(?P<of>[A-Z]\d*)"
+    r")(?![\w])")
+
+Run = tuple[str, int]
+
+
+def runs(text: str, verbatim: Collection[str] = ()) -> tuple[Run, ...]:
+    """``text`` as its runs (text, place); empty where it has no index to set, so that it is written as it is.
+
+    ``verbatim``: the user's texts, kept flat wherever they stand whole in ``text``.
+    """
+    found: list[Run] = []
+    for piece in pieces(text, tuple(verbatim)):
+        if isinstance(piece, Symbol):
+            found += [(piece.base, LINE), (piece.index, BELOW), (piece.component, ABOVE)]
+        else:
+            found += _drawing_runs(piece, verbatim)
+    joined = _joined(run for run in found if run[0])
+    return joined if any(place != LINE for _, place in joined) else ()
+
+
+def _drawing_runs(plain: str, verbatim: Collection[str]) -> list[Run]:
+    """The runs of a text the note's symbols left plain: the drawings' own shapes in it indexed."""
+    kept = [(found.start(), found.end()) for typed in verbatim if typed
+            for found in re.finditer(rf"(?<!\w){re.escape(typed)}(?!\w)", plain)]
+    found: list[Run] = []
+    done = 0
+    for match in _DRAWING_SYMBOL.finditer(plain):
+        if any(start < match.end() and match.start() < end for start, end in kept):
+            continue
+        base, index = (value for value in match.groups() if value is not None)
+        found += [(plain[done:match.start()], LINE), (base, LINE), (index, BELOW)]
+        done = match.end()
+    return found + [(plain[done:], LINE)]
+
+
+def _joined(found: Iterable[Run]) -> tuple[Run, ...]:
+    """Neighbouring runs of one place made one."""
+    joined: list[Run] = []
+    for text, place in found:
+        if joined and joined[-1][1] == place:
+            joined[-1] = (joined[-1][0] + text, place)
+        else:
+            joined.append((text, place))
+    return tuple(joined)
+
+
+def with_indices(layers: Sequence[Layer], verbatim: Iterable[str] = ()) -> list[Layer]:
+    """``layers`` with each text's symbols' indices set (:attr:`Text.runs`); the title block and the texts
+    ``verbatim`` (the scene's own words) as written."""
+    verbatim = tuple(typed for typed in verbatim if typed)
+
+    def indexed(item):
+        if not isinstance(item, Text):
+            return item
+        found = runs(item.text, verbatim)
+        return dataclasses.replace(item, runs=found) if found else item
+
+    return [layer if layer.name in USER_LAYERS else Layer(layer.name, tuple(map(indexed, layer.items)))
+            for layer in layers]
+
+
+__all__ = ["ABOVE", "BELOW", "LINE", "Run", "runs", "with_indices"]
