@@ -7,7 +7,6 @@ import re
 
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
 
-
 _RUN_TAG = re.compile(r"</?tspan[^>]*>")
 
 

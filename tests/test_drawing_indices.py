@@ -35,9 +35,12 @@ FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
     ("μv = 0.01 (m/s)/mm", (("μ", LINE), ("v", BELOW), (" = 0.01 (m/s)/mm", LINE))),
     ("(m1r1)L", (("(m", LINE), ("1", BELOW), ("r", LINE), ("1", BELOW), (")", LINE), ("L", BELOW))),
     ("s2", (("s", LINE), ("2", BELOW))),
+    ("aGEⁿ = 0.0385 m/s²", (("a", LINE), ("GE", BELOW), ("ⁿ = 0.0385 m/s²", LINE))),
 ])
 def test_a_text_is_cut_into_its_runs_on_below_and_above_the_line(text, expected):
     assert runs(text) == expected
+    # Joined, the runs are the text the layouts measured.
+    assert "".join(run for run, _ in runs(text)) == text
 
 
 @pytest.mark.parametrize("text", ["A", "pa", "B′", "Position 10", "1:2.5", "Crank-rocker mechanism", "Plan", "ab"])
@@ -52,13 +55,22 @@ def test_the_user_s_own_words_stay_flat():
     assert runs("Press F1: R12", ["Press F1"]) == (("Press F1: R", LINE), ("12", BELOW))
 
 
+def test_a_load_the_user_names_as_one_symbol_is_indexed_as_one():
+    """A resisting load named F6 is F₆ beside the drawing's Fᵤ₆; one named F4.2 is kept as typed."""
+    layers = [Layer("forces-labels", (Text((0, 0), "F6"), Text((0, 0), "F4.2"), Text((0, 0), "(Fu6 + F6)·h9")))]
+    named, typed, equation = with_indices(layers, ["F6", "F4.2"])[0].items
+    assert named.runs == (("F", LINE), ("6", BELOW)) and typed.runs == ()
+    assert equation.runs[-4:] == ((" + F", LINE), ("6", BELOW), (")·h", LINE), ("9", BELOW))
+
+
 def test_the_title_block_is_written_as_the_user_wrote_it():
     layers = [Layer("title-block", (Text((0, 0), "R12"),)), Layer("forces-labels", (Text((0, 0), "R12"),))]
     block, labels = with_indices(layers)
     assert block.items[0].runs == () and labels.items[0].runs == (("R", LINE), ("12", BELOW))
 
 
-@pytest.mark.parametrize("symbol", ["R12", "R23τ", "Fu2", "Mи3", "ω2", "ε4", "μV", "ΔWmax", "JF", "sB", "aBA^τ"])
+@pytest.mark.parametrize("symbol", ["R12", "R23τ", "Fu2", "Mи3", "ω2", "ε4", "μV", "μt", "μφ", "ΔWmax", "JF", "sB",
+                                    "aBA^τ"])
 def test_a_symbol_is_indexed_as_the_note_indexes_it(symbol):
     """The drawing's runs and the note's HTML set the same part of a symbol below and above the line."""
     html = "".join(text if place == LINE else f"<{'sub' if place == BELOW else 'sup'}>{text}</{'sub' if place == BELOW else 'sup'}>"

@@ -7,9 +7,10 @@ what is measured: a run set smaller is narrower than the box it was laid out in,
 
 A symbol is what the note calls one (:mod:`graphplan.report.symbols`, shared so that a drawing and the note beside it
 index the same symbols) and the few shapes only the drawings letter: an arm (h7, hb), a numbered point of a plan or a
-mechanism (s2, n3, S2, σ6), a diagram's scale (μv, μφ), a rocker's swing (ψmax), a plane's angle (θL) and a velocity
+mechanism (s2, n3, S2, σ6), a rocker's swing (ψmax), a plane's angle (θL) and a velocity
 along a diagram's axis (vB).  The title block and the scene's own words (its title, the loads it names) are the user's
-text and stay as written.
+text and stay as written, but for a word that is one symbol whole (a load named F6, indexed F₆ as the drawing's own
+Fᵤ₆ beside it).
 """
 
 from __future__ import annotations
@@ -29,13 +30,15 @@ _DRAWING_SYMBOL = re.compile(
     r"(?<![\w′″])(?:"
     r"(?P<arm>h)(?P<arm_index>\d+|[bу]|[uи]\d+)"
     r"|(?P<point>[A-Za-zσΣ])(?P<number>\d+)"
-    r"|(?P<scale>μ)(?P<quantity>[A-Za-zφψεωα])"
     r"|(?P<swing>ψ)(?P<extreme>max|min)"
     r"|(?P<angle>θ)(?P<plane>[A-Z])"
     r"|(?P<speed>v)(?P<of>[A-Z]\d*)"
     r")(?![\w])")
 
 Run = tuple[str, int]
+
+# The components a text may write as superscript letters of their own.
+_RAISED = frozenset("ⁿᵏʳ")
 
 
 def runs(text: str, verbatim: Collection[str] = ()) -> tuple[Run, ...]:
@@ -44,11 +47,19 @@ def runs(text: str, verbatim: Collection[str] = ()) -> tuple[Run, ...]:
     ``verbatim``: the user's texts, kept flat wherever they stand whole in ``text``.
     """
     found: list[Run] = []
+    at = 0
     for piece in pieces(text, tuple(verbatim)):
         if isinstance(piece, Symbol):
-            found += [(piece.base, LINE), (piece.index, BELOW), (piece.component, ABOVE)]
+            found += [(piece.base, LINE), (piece.index, BELOW)]
+            at += len(piece.base) + len(piece.index)
+            if piece.component:
+                # A component written raised already (aGEⁿ) stays as written; one written flat (R14τ) is raised.
+                written = text[at:at + 1]
+                found.append((written, LINE) if written in _RAISED else (piece.component, ABOVE))
+                at += 2 if written == "^" else 1
         else:
             found += _drawing_runs(piece, verbatim)
+            at += len(piece)
     joined = _joined(run for run in found if run[0])
     return joined if any(place != LINE for _, place in joined) else ()
 
@@ -79,10 +90,18 @@ def _joined(found: Iterable[Run]) -> tuple[Run, ...]:
     return tuple(joined)
 
 
+def _one_symbol(word: str) -> bool:
+    """Whether ``word`` is a single symbol: a base on the line and nothing after its index and component."""
+    found = runs(word)
+    return len(found) >= 2 and found[1][1] == BELOW and all(place != LINE for _, place in found[1:])
+
+
 def with_indices(layers: Sequence[Layer], verbatim: Iterable[str] = ()) -> list[Layer]:
     """``layers`` with each text's symbols' indices set (:attr:`Text.runs`); the title block and the texts
     ``verbatim`` (the scene's own words) as written."""
-    verbatim = tuple(typed for typed in verbatim if typed)
+    # A word of the user's that is one symbol whole (a load named F6) is indexed as one; any other (F4.2, a title
+    # "Press F1") is kept as typed.
+    verbatim = tuple(typed for typed in verbatim if typed and not _one_symbol(typed))
 
     def indexed(item):
         if not isinstance(item, Text):

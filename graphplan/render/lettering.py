@@ -81,8 +81,29 @@ def larger(height: float) -> float:
     return next((size for size in SERIES if size > height + 1e-9), height * 2 ** 0.5)
 
 
-__all__ = ["ARM_NAME", "AXIS_LABEL", "AXIS_NUMBER", "BLOCK_CORNER_LABEL", "BLOCK_DESIGNATION", "BLOCK_KIND",
-           "BLOCK_LABEL", "BLOCK_NAME", "BLOCK_VALUE", "CAPTION", "CURVE_NUMBER", "DIMENSION", "LETTER", "NAME",
-           "index_height",
-           "POSITIONS_LETTER", "POSITION_NUMBER", "SCALE", "SERIES", "SMALLEST", "SMALL_CAPTION", "TITLE", "at_most",
-           "larger"]
+__all__ = [
+    "ARM_NAME",
+    "AXIS_LABEL",
+    "AXIS_NUMBER",
+    "BLOCK_CORNER_LABEL",
+    "BLOCK_DESIGNATION",
+    "BLOCK_KIND",
+    "BLOCK_LABEL",
+    "BLOCK_NAME",
+    "BLOCK_VALUE",
+    "CAPTION",
+    "CURVE_NUMBER",
+    "DIMENSION",
+    "LETTER",
+    "NAME",
+    "POSITIONS_LETTER",
+    "POSITION_NUMBER",
+    "SCALE",
+    "SERIES",
+    "SMALLEST",
+    "SMALL_CAPTION",
+    "TITLE",
+    "at_most",
+    "index_height",
+    "larger",
+]

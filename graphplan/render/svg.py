@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from .indices import ABOVE, BELOW, LINE
+from .lettering import index_height
 from .primitives import (
     FONT_SIZE_PER_CAP,
     Arrow,
@@ -23,8 +25,6 @@ from .primitives import (
     has_wide,
     set_width_em,
 )
-from .indices import ABOVE, BELOW, LINE
-from .lettering import index_height
 from .script_runs import is_mixed, script_runs, width_em
 
 # Latin, Greek and Cyrillic from DejaVu Sans; a viewer that falls back glyph by glyph takes
