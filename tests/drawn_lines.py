@@ -10,6 +10,7 @@ from collections.abc import Collection, Iterable
 
 import shapely
 from shapely.geometry import LineString
+from sheet_texts import flat
 
 SVG = "{http://www.w3.org/2000/svg}"
 
@@ -57,8 +58,9 @@ def stroked_shapes(root: ET.Element, skipped: Collection[str] = ("leaders",)) ->
 
 
 def caption_text(svg: str, element: str) -> str:
-    """The words of the caption of the drawing's group ``element`` (``II(3,4)-caption``), its lines joined by spaces."""
-    return " ".join(re.findall(r">([^<]*)</text>", re.search(f'id="{element}-caption">(.*?)</g>', svg).group(1)))
+    """The words of the caption of the drawing's group ``element`` (``II(3,4)-caption``), its lines joined by spaces,
+    each line whole (a symbol's index is set as a run of its own)."""
+    return " ".join(re.findall(r">([^<]*)</text>", re.search(f'id="{element}-caption">(.*?)</g>', flat(svg)).group(1)))
 
 
 def arrow_length(svg: str, element: str) -> float:

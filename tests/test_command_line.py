@@ -47,13 +47,13 @@ def test_positions_svg_draws_every_position_and_the_paths(run_folder):
     ns = {"svg": "http://www.w3.org/2000/svg"}
     groups = {g.get("id"): g for g in root.findall("svg:g", ns)}
     assert {"paths", "positions", "extremes", "frame", "labels", "caption"} <= set(groups)
-    numbers = {t.text for t in groups["labels"].findall("svg:text", ns)}
+    numbers = {"".join(t.itertext()) for t in groups["labels"].findall("svg:text", ns)}
     assert {str(i) for i in range(12)} <= numbers
     assert {"O", "A", "B", "C", "E"} <= numbers
     # The crank pin's circle and four named points' paths, all closed (the crank turns a full cycle).
     paths = groups["paths"].findall("svg:path", ns)
     assert len(paths) == 5 and all(path.get("d").rstrip().endswith("Z") for path in paths)
-    caption = " ".join(t.text for t in groups["caption"].findall("svg:text", ns))
+    caption = " ".join("".join(t.itertext()) for t in groups["caption"].findall("svg:text", ns))
     assert "0,0025" in caption  # the ratchet's μl, written with the Russian decimal comma
 
 

@@ -14,7 +14,7 @@ from pathlib import Path
 import shapely
 from drawn_lines import stroked_shapes
 from scipy.optimize import brentq
-from sheet_texts import box, texts
+from sheet_texts import box, flat, texts
 
 from graphplan.cli import main
 
@@ -110,7 +110,7 @@ def test_an_extreme_on_a_numbered_position_is_lettered_with_primes_and_keeps_its
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
     source = (tmp_path / "out" / "positions.svg").read_text(encoding="utf-8")
     written = texts(source)
-    scale = float(re.search(r"μl = ([\d.]+) m/mm", source).group(1))
+    scale = float(re.search(r"μl = ([\d.]+) m/mm", flat(source)).group(1))
     ox, oy = frame_origin(source, scale)
 
     def paper(r: complex) -> tuple[float, float]:
@@ -165,7 +165,7 @@ def test_the_number_and_the_primed_letters_of_one_pin_stand_each_in_its_own_dire
                  "--only", "positions"]) == 0
     source = (tmp_path / "out" / "positions.svg").read_text(encoding="utf-8")
     root = ET.fromstring(source)
-    scale = float(re.search(r"μl = ([\d.]+) m/mm", source).group(1))
+    scale = float(re.search(r"μl = ([\d.]+) m/mm", flat(source)).group(1))
     # The pins and the pivot O, drawn as open circles: O the one with a pin r above it and r below.
     circles = {(round(float(item.get("cx")), 2), round(float(item.get("cy")), 2)) for item in root.iter(f"{SVG}circle")
                if item.get("fill") == "white"}

@@ -49,7 +49,7 @@ def arrow_length(group: ElementTree.Element) -> float:
 
 
 def stated(group: ElementTree.Element) -> list[float]:
-    return [float(value) for text in group.iter(f"{SVG}text") for value in FORCE_SCALE.findall(text.text or "")]
+    return [float(value) for text in group.iter(f"{SVG}text") for value in FORCE_SCALE.findall("".join(text.itertext()))]
 
 
 # The starter's two force sheets share one A1 with their rows apart, drawn at the record's scales: what is

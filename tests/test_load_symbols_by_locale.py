@@ -10,6 +10,7 @@ import re
 from pathlib import Path
 
 import pytest
+from sheet_texts import flat
 
 from graphplan.cli import main
 from graphplan.locale import load_symbol, load_symbols_in, strings
@@ -31,8 +32,9 @@ def test_each_added_load_is_named_as_its_locale_writes_it_and_no_other_name_chan
 
 
 def _svg_words(path: Path) -> str:
-    """The words an SVG draws, not its ids, which keep the internal names."""
-    return "\n".join(re.findall(r">([^<>]+)<", path.read_text(encoding="utf-8")))
+    """The words an SVG draws, not its ids, which keep the internal names: each text's words whole, its indices'
+    runs joined."""
+    return "\n".join(re.findall(r">([^<>]+)<", flat(path.read_text(encoding="utf-8"))))
 
 
 def _run(folder: Path, locale: str) -> Path:

@@ -12,6 +12,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from sheet_texts import flat
 
 from graphplan.cli import main
 from graphplan.locale import strings
@@ -21,7 +22,9 @@ NUMBER = r"([\d.,]+)"
 
 
 def _words_of(svg: Path) -> str:
-    return " ".join(element.text or "" for element in ElementTree.parse(svg).getroot().iter())
+    """The words the drawing writes, each text whole: a symbol's index, set as a run of its own, joined to it."""
+    root = ElementTree.fromstring(flat(svg.read_text(encoding="utf-8")))
+    return " ".join(element.text or "" for element in root.iter())
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])

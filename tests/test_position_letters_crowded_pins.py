@@ -17,7 +17,7 @@ from pathlib import Path
 
 import shapely
 from drawn_lines import stroked_shapes
-from sheet_texts import box, texts
+from sheet_texts import box, flat, texts
 
 from graphplan.cli import main
 from graphplan.render.linkage import BLOCK_REACH_MM
@@ -64,7 +64,7 @@ def test_the_scotch_yokes_a_prime_stands_near_its_top_pin_clear_of_the_ink(tmp_p
     the ink of no line (it stood on a 7 mm leader 8.5 mm off, down across the blocks, after reaching out from a clear
     spot near the pin to a dearer one)."""
     source, root = _drawn("scotch_yoke", tmp_path)
-    scale = float(re.search(r"μl = ([\d.]+) m/mm", source).group(1))
+    scale = float(re.search(r"μl = ([\d.]+) m/mm", flat(source)).group(1))
     reach = 0.075 / scale
     circles = {(round(float(item.get("cx")), 2), round(float(item.get("cy")), 2)) for item in root.iter(f"{SVG}circle")
                if item.get("fill") == "white"}

@@ -25,6 +25,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
+from sheet_texts import flat
 
 from graphplan.errors import SceneError
 from graphplan.reader import Table
@@ -660,7 +661,7 @@ def test_a_rotor_balanced_already_writes_its_corrections_0_and_no_angle_in_the_r
         # A vector of no length has no direction: "θL = 0.0°" and angle_deg 0.0 read as a correction set along x.
         assert entry["mass_radius"] == 0.0 and entry["mass"] == 0.0 and entry["angle_deg"] is None
     assert '"angle_deg": null' in (tmp_path / "out" / "results.json").read_text(encoding="utf-8")
-    svg = (tmp_path / "out" / "rotor_balancing.svg").read_text(encoding="utf-8")
+    svg = flat((tmp_path / "out" / "rotor_balancing.svg").read_text(encoding="utf-8"))
     name = "L" if kind == "dynamic" else "b"
     assert f"m{name}r{name} = 0 kg·m, θ{name} = —" in svg and "0000000" not in svg and "θL = 0.0°" not in svg
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")

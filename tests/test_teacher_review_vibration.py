@@ -22,6 +22,7 @@ import sys
 import numpy as np
 import pytest
 from scipy.optimize import brentq
+from sheet_texts import flat
 
 from graphplan.run import run
 from graphplan.scene import loads as scene_from_text
@@ -553,7 +554,7 @@ def test_a_couple_needs_equal_and_opposite_corrections_written_alike_on_the_poly
     left, right = results["balancing"]["planes"]
     assert left["mass_radius"] == pytest.approx(0.08 / 0.8) and right["mass_radius"] == pytest.approx(0.08 / 0.8)
     assert left["angle_deg"] == pytest.approx(210.0) and right["angle_deg"] == pytest.approx(30.0)
-    svg = svgs["rotor_balancing"]
+    svg = flat(svgs["rotor_balancing"])
     for plane in "LR":
         caption = re.search(rf'<g id="plane-{plane}-caption">(.*?)</g>', svg, re.DOTALL).group(1)
         assert f"m{plane} = 1.000 kg at r{plane} = 0.1 m" in caption
