@@ -15,6 +15,7 @@ from xml.etree import ElementTree
 
 import pytest
 from scene_texts import crank_rocker_working_its_quicker_stroke
+from sheet_texts import flat
 from test_scene_errors import to_toml
 
 import graphplan
@@ -73,7 +74,7 @@ def test_the_diagrams_of_a_slider_s_run_come_by_default_and_need_three_intervals
     slider = ROOT / "fixtures" / "slider_driven.toml"
     status, out = run(tmp_path, "--only", "diagrams", scene=slider)
     assert status == 0
-    svg = (out / "diagrams.svg").read_text(encoding="utf-8")
+    svg = flat((out / "diagrams.svg").read_text(encoding="utf-8"))
     assert "ψ4(t)" in svg and "T = |Δs|/|v| = 0.2 m / 0.08 m/s = 2.5 s" in svg
     short = tmp_path / "short.toml"
     short.write_text(re.sub(r"(?m)^count\s*=.*$", "count = 3", slider.read_text(encoding="utf-8"))
@@ -662,7 +663,7 @@ def test_a_drawing_the_sheets_alter_to_fit_is_written_on_its_own_as_without_the_
     assert [name for name in own if (sheets / name).read_bytes() != (alone / name).read_bytes()] == []
 
     def texts(path: Path, pattern: str) -> set[str]:
-        return set(re.findall(pattern, path.read_text(encoding="utf-8")))
+        return set(re.findall(pattern, flat(path.read_text(encoding="utf-8"))))
 
     # The lever on its own at the velocity plan's μV, |ω|·lOA over the pole's 150 mm; the sheets' a step coarser.
     driver = document["driver"]

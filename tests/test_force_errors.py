@@ -11,6 +11,7 @@ import math
 from pathlib import Path
 
 import pytest
+from sheet_texts import flat
 
 import graphplan
 from graphplan.analysis import analyse
@@ -116,7 +117,7 @@ def test_a_given_force_scale_draws_every_polygon_at_it(tmp_path):
     with_forces = [p for p in document["positions"] if "forces" in p]
     assert with_forces and {p["forces"]["polygon_scale"] for p in with_forces} == {25.0}
     for position in with_forces:
-        drawing = (tmp_path / "out" / f"forces_{position['index']}.svg").read_text(encoding="utf-8")
+        drawing = flat((tmp_path / "out" / f"forces_{position['index']}.svg").read_text(encoding="utf-8"))
         assert "μF = 25 Н/мм" in drawing
     reactions = {row["quantity"] for row in document["errors"] if row["quantity"].startswith("R")}
     assert reactions == {"R12", "R14", "R23", "R34"}

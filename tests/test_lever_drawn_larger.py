@@ -17,6 +17,7 @@ import re
 from pathlib import Path
 
 import pytest
+from sheet_texts import flat
 from test_sheets import STANDARD, analyses_of, with_drawing
 
 from graphplan.locale import load_symbol, strings
@@ -228,10 +229,10 @@ def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_dra
     # The lever's caption, "μV = 0.004 (m/s)/mm, arrows: μF = …", broken after the comma where it is too long.
     lever = r"μV = ([\d.]+) \(m/s\)/mm,"
     on_sheets = {float(value) for sheet in (tmp_path / "out").glob("sheet_*.svg")
-                 for value in re.findall(lever, sheet.read_text(encoding="utf-8"))}
+                 for value in re.findall(lever, flat(sheet.read_text(encoding="utf-8")))}
     smaller = 0
     for pa, position in zip(pas, analysis.plans, strict=True):
-        figure = (tmp_path / "out" / f"forces_{position.number}.svg").read_text(encoding="utf-8")
+        figure = flat((tmp_path / "out" / f"forces_{position.number}.svg").read_text(encoding="utf-8"))
         drawn_at = float(re.search(lever, figure)[1])
         velocity = position.velocity
         assert pa == pytest.approx(abs(velocity.points[velocity.images["A"]]) / drawn_at, abs=0.006)

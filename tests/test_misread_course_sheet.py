@@ -13,6 +13,8 @@ import json
 import re
 from pathlib import Path
 
+from sheet_texts import flat
+
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.misreadings import SheetPolygons, misread
@@ -40,7 +42,7 @@ def _drawn(folder: str):
                   if position["index"] == _index())
     captions = {}
     for path in Path(folder).glob("sheet_*.svg"):
-        text = path.read_text(encoding="utf-8")
+        text = flat(path.read_text(encoding="utf-8"))
         for label in record:
             key = re.sub(r"[^A-Za-z0-9]+", "-", label).strip("-")
             at = text.find(f'id="forces-{POSITION}-polygon-{key}-caption"')

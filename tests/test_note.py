@@ -20,6 +20,7 @@ from string import Formatter
 import numpy as np
 import pytest
 from light_runs import on_no_sheet
+from sheet_texts import flat
 
 import graphplan
 from graphplan.analysis import analyse
@@ -589,7 +590,7 @@ def test_the_initial_data_give_the_length_scale_the_plan_of_positions_is_drawn_a
     if not given:
         scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None))
     analysis = analyse(scene)
-    drawn = re.search(r"μl = ([\d.]+) m/mm", positions_svg(analysis)).group(1)
+    drawn = re.search(r"μl = ([\d.]+) m/mm", flat(positions_svg(analysis))).group(1)
     stated = re.search(r"^\| μl \| ([\d.]+) m/mm \|", note_markdown(analysis), re.MULTILINE).group(1)
     assert stated == drawn
     assert (float(drawn) == scene.drawing.length_scale) if given else float(drawn) > 0.0025

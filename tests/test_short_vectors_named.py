@@ -19,6 +19,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from sheet_texts import flat
 
 import graphplan
 from graphplan.analysis import analyse
@@ -58,8 +59,8 @@ def run(tmp_path_factory):
 
 
 def svg_texts(path: Path) -> list[tuple[float, float, str]]:
-    """(x, y, text) of every text of an SVG drawing, in the order it is written."""
-    source = path.read_text(encoding="utf-8")
+    """(x, y, text) of every text of an SVG drawing, in the order it is written, its runs read on as one."""
+    source = flat(path.read_text(encoding="utf-8"))
     return [(float(x), float(y), text.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">"))
             for x, y, text in re.findall(r'<text[^>]*?x="([-\d.]+)" y="([-\d.]+)">([^<]*)</text>', source)]
 

@@ -30,6 +30,7 @@ from pathlib import Path
 
 import pytest
 from console import without_progress
+from sheet_texts import flat
 
 from graphplan.cli import main
 
@@ -287,5 +288,5 @@ def test_a_speeds_angle_is_not_said_twice_where_the_cycle_starts_at_nought(tmp_p
     # twice, which a reader takes for two different things.
     code, _ = run(tmp_path, khurmi_16_5_scene(), "--locale", locale)
     assert code == 0
-    drawing = (tmp_path / "out" / "dynamics.svg").read_text(encoding="utf-8")
+    drawing = flat((tmp_path / "out" / "dynamics.svg").read_text(encoding="utf-8"))
     assert said in drawing and unsaid not in drawing
