@@ -9,6 +9,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from sheet_texts import flat
 
 from graphplan.cli import main
 
@@ -133,7 +134,8 @@ DYNAMICS_SYMBOL = re.compile(rf"(?<!\w)(?:(?:ΔT|ΔE|ΔW|J|ω)[{LETTER}′]+(?:,
 
 
 def drawn_words(svg: Path) -> str:
-    return "\n".join(element.text or "" for element in ElementTree.parse(svg).getroot().iter())
+    root = ElementTree.fromstring(flat(svg.read_text(encoding="utf-8")))
+    return "\n".join(element.text or "" for element in root.iter())
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])

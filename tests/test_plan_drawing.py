@@ -473,9 +473,11 @@ def test_chinese_is_set_in_a_cjk_font_and_the_font_list_has_one_after_the_latin_
             or element.tag.endswith("text") and element.text]
     if width_em(script_runs("速度 v"), "normal") is not None:  # the fonts to measure a mixed line by are here
         assert any(element.tag.endswith("tspan") for element in runs)
+    # A symbol's index is a run in its line's font, which it takes from its text.
+    line_font = {run: text.get("font-family") for text in root.iter() if text.tag.endswith("text") for run in text}
     for element in runs:
         chinese = any("\u4e00" <= character <= "\u9fff" for character in element.text)
-        first = element.get("font-family").split(",")[0]
+        first = (element.get("font-family") or line_font[element]).split(",")[0]
         assert first == ("Noto Sans CJK SC" if chinese else "DejaVu Sans"), element.text
 
 

@@ -20,6 +20,7 @@ from types import MappingProxyType
 
 import numpy as np
 import pytest
+from sheet_texts import flat
 
 from graphplan import load_text
 from graphplan.analysis import analyse
@@ -477,7 +478,7 @@ def test_a_run_writes_the_press_s_friction_as_the_statics_worked_here_gives_it(t
         assert written["lever_balancing_moment"] == pytest.approx(own["lever"], rel=1e-6)
         assert complex(*written["loads"]["Ff16"]) == pytest.approx(own["loads"]["Ff16"], rel=1e-6)
         assert complex(*written["reactions"]["R16"]) == pytest.approx(own["reactions"]["R16"], rel=1e-6)
-        sheet = (out / f"forces_friction_{position.number}.svg").read_text(encoding="utf-8")
+        sheet = flat((out / f"forces_friction_{position.number}.svg").read_text(encoding="utf-8"))
         written_arm = re.search(r"x = (−?[\d.,]+)", sheet[sheet.index("ΣME(6)"):]).group(1)
         assert float(written_arm.replace(",", ".").replace("−", "-")) == pytest.approx(1000.0 * abs(own["offset"]),
                                                                                       rel=1e-3)

@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 
 import numpy as np
+from sheet_texts import flat
 
 import graphplan
 from graphplan.kinematic_diagrams import kinematic_diagrams
@@ -167,7 +168,7 @@ def test_a_load_diagram_is_drawn_smaller_beside_a_force_sheet_rather_than_alone_
     scene = graphplan.load_text(KNEE_PRESS)
     done = scene.write(tmp_path / "press", only=["sheets", "load_diagrams"])
     sheets = sorted(path for path in map(Path, done.files) if path.name.startswith("sheet_"))
-    holding = [path.read_text(encoding="utf-8") for path in sheets if 'id="load-diagrams' in path.read_text("utf-8")]
+    holding = [flat(path.read_text(encoding="utf-8")) for path in sheets if 'id="load-diagrams' in path.read_text("utf-8")]
     assert len(holding) == 1
     # At its usual 150 by 60 mm it took an A1 of its own; it stands beside a force sheet's drawings instead.
     assert 'id="forces-' in holding[0]

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from sheet_texts import flat
 
 import graphplan
 from graphplan.analysis import analyse
@@ -157,7 +158,7 @@ def test_a_triad_that_reaches_a_limit_position_stops_there():
 def test_the_plan_sheet_marks_assurs_point_on_the_mechanism(tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(FIXTURE), "--out", str(out), "--only", "velocity"]) == 0
-    drawing = (out / "plan_2.svg").read_text(encoding="utf-8")
+    drawing = flat((out / "plan_2.svg").read_text(encoding="utf-8"))
     assert ">Σ6<" in drawing, "the special point is lettered on the mechanism"
     assert ">σ6<" in drawing, "and its image on the velocity plan"
 
