@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 from console import without_progress
 from scene_texts import POWER_CYCLE_PRESS
+from sheet_texts import flat
 
 from graphplan.cli import main
 from graphplan.dynamics import diagram_model
@@ -86,7 +87,7 @@ def test_a_constant_je_gives_one_flywheel_with_no_energy_mass_diagram_named(tmp_
                      r"− 30 = ([\d.]+) kg·m², exactly", note)
     written = float(re.search(r"− 30 = ([\d.]+) kg·m², exactly", note)[1])
     assert written == pytest.approx(expected, rel=5e-5)
-    drawing = (out / "dynamics.svg").read_text(encoding="utf-8")
+    drawing = flat((out / "dynamics.svg").read_text(encoding="utf-8"))
     assert "ab·μT" not in drawing and "energy–mass" not in drawing and "(Je constant)" in drawing
     assert "energy–mass diagram, with Je variable" not in note
 

@@ -35,7 +35,7 @@ def written(scene: Path, sheet: str, out: Path) -> list[Path]:
 
 def lines_of(group: ElementTree.Element) -> list[str]:
     """The lines of a caption or heading that are not in bold: a drawing's scales, a heading's line of scales."""
-    return [text.text or "" for text in group.iter(f"{SVG}text") if text.get("font-weight") != "bold"]
+    return ["".join(text.itertext()) for text in group.iter(f"{SVG}text") if text.get("font-weight") != "bold"]
 
 
 def scales_in(lines: list[str], symbol: str) -> list[str]:

@@ -17,6 +17,7 @@ import re
 from pathlib import Path
 
 import pytest
+from sheet_texts import flat
 from test_joint_friction import OMEGA, PUSH, RADIUS, ROD, ratchet_with_friction, slider_crank, slider_crank_text
 
 import graphplan
@@ -156,7 +157,7 @@ def test_the_lever_piece_brings_the_lever_with_friction_and_forces_alone_the_she
         beta = math.asin(RADIUS * math.sin(phi) / ROD)
         expected = -PUSH * RADIUS * math.sin(phi + beta) / math.cos(beta) + math.copysign(
             f * journal * PUSH / math.cos(beta), OMEGA)
-        caption = re.search(r'<g id="lever-caption">(.*?)</g>', rubbing).group(1)
+        caption = flat(re.search(r'<g id="lever-caption">(.*?)</g>', rubbing).group(1))
         on_lever = re.search(r"Mb = (−?[\d.]+) N·m \(Zhukovsky's lever\)", caption)
         assert float(on_lever.group(1).replace("−", "-")) == pytest.approx(expected, rel=2e-3)
         # Its loads are the friction's too: the journal's friction moment, as a couple of forces on the lever.

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import pytest
 from drawn_lines import arrow_length
+from sheet_texts import flat
 
 from graphplan.analysis import analyse
 from graphplan.run import run
@@ -54,7 +55,7 @@ def _sheets(folder, friction):
     run(_scene(friction=friction), folder, only=["sheets"])
     captions = {}
     for path in Path(folder).glob("sheet_*.svg"):
-        text = path.read_text(encoding="utf-8")
+        text = flat(path.read_text(encoding="utf-8"))
         for found in re.finditer(r'id="([^"]+)-caption">(.*?)</g>', text):
             captions[found.group(1)] = (int(path.stem.removeprefix("sheet_")),
                                         " ".join(re.findall(r">([^<]*)</text>", found.group(2))))

@@ -16,6 +16,7 @@ import re
 
 import pytest
 from drawn_lines import arrow_length, caption_text
+from sheet_texts import flat
 from test_misread_record_friction_polygons import NUMBER, _far_off, _scene
 
 from graphplan.run import run
@@ -47,7 +48,8 @@ def drawn(tmp_path_factory):
 
 
 def _scales(svg, word):
-    return {group: float(re.search(word + r"μF = ([0-9.]+) N/mm", caption_text(svg, f"{element}-{group}")).group(1))
+    captions = flat(svg)
+    return {group: float(re.search(word + r"μF = ([0-9.]+) N/mm", caption_text(captions, f"{element}-{group}")).group(1))
             for group, element in (("II-3-4", "body" if word else "polygon"), ("I-1-2", "body" if word else "polygon"))}
 
 
