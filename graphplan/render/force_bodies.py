@@ -69,7 +69,7 @@ from .force_marks import (
 )
 from .force_rows import CAPTION_WIDTH_MM, Drawing
 from .labels import LEADER_WIDTH, Anchor, cover_one_another, open_direction
-from .linkage import link_outlines, outline_points
+from .linkage import BLOCK_REACH_MM, link_outlines, outline_points
 from .numerals import short, significant
 from .plans import ZERO_MM, too_short_lines
 from .primitives import (
@@ -213,7 +213,10 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     # of action run on to its arm, every leader from its head to a clear spot crossing another name); a point's,
     # a moment's or an arm's name keeps its place: led far out from a thin arm in the star of arms at Σ6 (the class
     # III triad's h3 and h8 on its A3 sheet of position 8), it reads as naming another.
-    points = [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
+    # A pin a slider block is drawn round is lettered beside the block, as on the plan sheets, not on its outline.
+    blocked = {slide.joint for slide in sheet.motion.slides if slide.slider in group.links}
+    points = [Anchor(where, name, POINT_SIZE, open_direction(where, figure),
+                     symbol_mm=BLOCK_REACH_MM if name in blocked else 0.0)
               for name in _named_points(sheet, group) + special_names for where in [paper(sheet.positions[name])]]
     points += [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
                for name, where in along_names if name not in {anchor.text for anchor in points}]
