@@ -221,7 +221,11 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     points += [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
                for name, where in along_names if name not in {anchor.text for anchor in points}]
     others = points + turning_anchors + circle_anchors + arm_anchors
-    labels = letters_placed(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others))
+    # Clear of the filled outlines' ink (a slider's block), as wide as it is drawn: kept off its middle alone, the
+    # shaper's A stood on the 0.7 mm outline of its block.
+    filled = [item for item in links if isinstance(item, Polyline) and item.closed and item.fill]
+    labels = letters_placed(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others),
+                            inked=filled)
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                                    text["body_force_scale"].format(value=format_scale(scale),

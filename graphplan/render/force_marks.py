@@ -45,6 +45,7 @@ from .force_rows import RunOn
 from .labels import (
     Anchor,
     Placement,
+    ink_of,
     obstacles_and_shafts,
     place_labels,
     remembered,
@@ -240,10 +241,11 @@ def whole_reaction(name: str) -> bool:
 
 def letters_placed(anchors: Sequence[Anchor], figure: Sequence[Primitive],
               reach_farther: bool | Sequence[bool] = True, unnamed: Sequence[Anchor] = (),
-              shafts_inked: bool = False) -> Placement:
+              shafts_inked: bool = False, inked: Sequence[Primitive] = ()) -> Placement:
     """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot, and of the spots of the
     ``unnamed`` (a lever's arrows whose names are given under it); ``shafts_inked``, clear of the arrows' shafts as
-    wide as they are drawn, not their middles alone.
+    wide as they are drawn, not their middles alone; clear of the items of the figure ``inked`` as wide as they are
+    drawn too (:func:`graphplan.render.labels.ink_of`).
 
     A label covering another one's anchor (the tail of a moment's arc)
     would leave that one no room beside it, so the anchors count as points.
@@ -254,7 +256,9 @@ def letters_placed(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
     # A leader across an arrow reads as part of it, or as naming its load: the placer costs it as two leaders crossing.
     obstacles, shafts = obstacles_and_shafts(figure, shafts_inked)
-    return remembered(place_labels, anchors, obstacles + spots, reach_farther=reach_farther, shafts=shafts)
+    ink = ink_of(inked)
+    return remembered(place_labels, anchors, obstacles + ink + spots, reach_farther=reach_farther,
+                      shafts=shafts + [False] * len(ink))
 
 
 def label_on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline],
