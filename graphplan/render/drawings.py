@@ -110,7 +110,7 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
         if not across > LARGEST_PAPER_MM:  # NaN too: a singular position's plan is refused elsewhere
             continue
         # The velocity plans of every position are drawn at velocity_plans_pole, not at the plan sheets' pole.
-        grid = isinstance(position, VelocityPosition) and analysis.scene.drawing.velocity_plans_pole is not None
+        grid = _on_grid(position)
         field = VELOCITY_PLANS_FIELD_MM if grid else PLAN_FIELD_MM
         key, given, fix = _plan_scale(analysis, kind, plan, grid)
         at_key = f" at {key} = {given:g}" if given is not None else ""
@@ -160,15 +160,15 @@ def below_reading(analysis: Analysis) -> list[str]:
                         f"{POSITIONS_FIELD_MM:g} mm plan of positions")
     # The velocity plans of every position drawn at velocity_plans_pole are judged apart, each at that pole (a plan
     # sheet's position among them holds its sheet's larger plan): the plan sheets' plans would hide a slip of the
-    # key's unit.
+    # key's unit.  Without that pole they are drawn at the program's own μV, which fills their field, and
+    # judged with the plan sheets' they would hide a plan sheet's pole drawn too small.
     pole, pin = drawing.velocity_plans_pole, analysis.mechanism.driver.joint
     for kind, grid in (("velocity", False), ("acceleration", False), ("velocity", True)):
         if grid and pole is None:
             continue
         drawn = [(spread(plan) * pole / abs(plan.value(pin)) if grid else spread(plan) / plan.scale, plan)
                  for position, plan_kind, plan in _drawn_plans(analysis)
-                 if plan_kind == kind and spread(plan) > 0.0
-                 and (pole is not None and isinstance(position, VelocityPosition)) == grid]
+                 if plan_kind == kind and spread(plan) > 0.0 and _on_grid(position) == grid]
         if not drawn:
             continue
         across, plan = max(drawn, key=lambda pair: pair[0])
@@ -191,6 +191,13 @@ def _drawn_plans(analysis: Analysis) -> list[tuple[VelocityPosition | PlanPositi
     return [(position, kind, plan) for position in (*analysis.velocity_plans, *analysis.plans)
             for kind, plan in (position.plans if isinstance(position, PlanPosition)
                                else {"velocity": position.velocity}).items()]
+
+
+def _on_grid(position: VelocityPosition | PlanPosition) -> bool:
+    """Whether ``position``'s plan is one of the velocity plans of every position (``positions.velocity_plans``),
+    not a plan sheet's: a plan sheet's position is a :class:`VelocityPosition` too, since it has a velocity plan,
+    but its plans are drawn at the plan sheets' poles."""
+    return not isinstance(position, PlanPosition)
 
 
 def _drawn_polygons(analysis: Analysis) -> list[tuple[PlanPosition, GroupForces]]:

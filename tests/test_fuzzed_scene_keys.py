@@ -1,0 +1,74 @@
+"""Scenes a fuzzer of the linkage's keys ([scene], [frame], [driver], [[groups]], [points], [links.N], [[loads]],
+[positions], [drawing], [project], [output]: each value given another type, 0, a negative, NaN, inf, 1e300,
+1e-300, an empty, long or non-Latin string; each key deleted; a table emptied; an array emptied or lengthened; a
+key misspelled; the keys no fixture uses added) found answered wrongly: each as the small scene it came down to,
+and the answer a student should get instead."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from graphplan.cli import main
+
+CENTRAL_SLIDER_CRANK = """
+[scene]
+title = "A central slider-crank"
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.05
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.19
+guide = {{ through = "O", angle = 0.0 }}
+assembly = "forward"
+[positions]
+count = 12
+working = {{ link = 4, sense = "backward" }}
+plans = [2]
+{velocity_plans}
+[drawing]
+{drawing}
+"""
+
+
+def _scene(tmp_path: Path, velocity_plans: str = "", drawing: str = "") -> Path:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(CENTRAL_SLIDER_CRANK.format(velocity_plans=velocity_plans, drawing=drawing), encoding="utf-8")
+    return scene
+
+
+def test_a_pole_for_the_velocity_plans_of_every_position_none_of_which_is_drawn_runs(tmp_path, capsys) -> None:
+    """`[drawing] velocity_plans_pole` given where `positions.velocity_plans` lists no position ended the run in a
+    ValueError (max() of an empty sequence) after the analysis: the plan sheets' plans were taken for the velocity
+    plans of every position, for a position with plan sheets is also a position with a velocity plan.  The pole
+    draws nothing here; the run writes the plan sheet, and no output is left half-written."""
+    out = tmp_path / "out"
+    scene = _scene(tmp_path, drawing="velocity_plans_pole = 60.0")
+    assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 0
+    told = capsys.readouterr()
+    assert "Traceback" not in told.err
+    assert (out / "plan_2.svg").is_file()
+
+
+def test_a_plan_sheet_drawn_too_small_is_told_at_its_pole_beside_the_grid_s_pole(tmp_path, capsys) -> None:
+    """A plan sheet's velocity plan at `velocity_pole = 1` is drawn with pa 1 mm long, the whole plan (pa, ab, pb
+    of a slider-crank, none longer than pa·(1 + r/l) at position 2) a few millimetres across, under a tenth of its
+    150 mm field: told at `drawing.velocity_pole` without the pole of the velocity plans of every position and,
+    as it must be, with it (that pole was taken to draw the plan sheet's plan, which was then judged as one of
+    the grid's and not as its own)."""
+    for pole in ("", "velocity_plans_pole = 60.0"):
+        scene = _scene(tmp_path, velocity_plans="velocity_plans = [1, 2, 3, 4]",
+                       drawing=f"velocity_pole = 1.0\n{pole}")
+        out = tmp_path / f"out{len(pole)}"
+        assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 0
+        told = capsys.readouterr()
+        assert "drawing.velocity_pole: draws the largest velocity plan" in told.out + told.err, (pole, told)
