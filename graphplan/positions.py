@@ -207,7 +207,9 @@ def first_value(mechanism: Mechanism) -> float:
     driver, start = mechanism.driver, mechanism.scene.positions.start
     if not driver.cyclic:
         return float(driver.travel[0])
-    return 0.0 if start == "extreme" else math.radians(float(start))
+    # Whole turns taken off in degrees, where that is exact: in radians an angle of many turns keeps only the digits
+    # its size leaves after the point, and the positions would stand off the angles results.json writes for them.
+    return 0.0 if start == "extreme" else math.radians(math.fmod(float(start), 360.0))
 
 
 def _first_assembly(mechanism: Mechanism) -> Reference | None:

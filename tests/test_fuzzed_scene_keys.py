@@ -6,7 +6,10 @@ and the answer a student should get instead."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
+
+import pytest
 
 from graphplan.cli import main
 
@@ -72,3 +75,26 @@ def test_a_plan_sheet_drawn_too_small_is_told_at_its_pole_beside_the_grid_s_pole
         assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 0
         told = capsys.readouterr()
         assert "drawing.velocity_pole: draws the largest velocity plan" in told.out + told.err, (pole, told)
+
+
+def _point_velocities(tmp_path: Path, name: str, start: float) -> list[list[float]]:
+    scene = tmp_path / f"{name}.toml"
+    scene.write_text(CENTRAL_SLIDER_CRANK.format(velocity_plans="", drawing="").replace(
+        "count = 12", f"count = 12\nstart = {start!r}"), encoding="utf-8")
+    out = tmp_path / name
+    assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 0
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    return [position["points"]["B"]["v"] for position in document["positions"]]
+
+
+def test_a_start_angle_of_many_turns_gives_the_motion_of_its_angle_within_the_turn(tmp_path, capsys) -> None:
+    """`positions.start = 1e15` (degrees, within the magnitudes a scene takes) is 280° and 2 777 777 777 777 whole
+    turns: the same positions.  Turned into radians whole, the angle kept only a few digits after the point, and
+    the piston's velocities came out 0.2 % off those of `start = 280` while results.json wrote both positions'
+    angle as 280°.  They are the same to the 12 digits results.json writes."""
+    assert (1e15 - 280.0) % 360.0 == 0.0
+    many_turns = _point_velocities(tmp_path, "many", 1e15)
+    within_the_turn = _point_velocities(tmp_path, "within", 280.0)
+    capsys.readouterr()
+    for far, near in zip(many_turns, within_the_turn, strict=True):
+        assert far == pytest.approx(near, rel=1e-10, abs=1e-12)
