@@ -13,6 +13,8 @@ import pytest
 
 from graphplan.cli import main
 
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+
 CENTRAL_SLIDER_CRANK = """
 [scene]
 title = "A central slider-crank"
@@ -97,4 +99,26 @@ def test_a_start_angle_of_many_turns_gives_the_motion_of_its_angle_within_the_tu
     within_the_turn = _point_velocities(tmp_path, "within", 280.0)
     capsys.readouterr()
     for far, near in zip(many_turns, within_the_turn, strict=True):
+        assert far == pytest.approx(near, rel=1e-10, abs=1e-12)
+
+
+def test_a_swing_of_many_turns_gives_the_motion_of_its_angles_within_the_turn(tmp_path, capsys) -> None:
+    """A rocking crank's `swing = [T + 20, T + 65]`, T = 999 999 999 999 720 a whole number of turns (a magnitude
+    the scene reader takes), is the swing [20, 65]: results.json wrote its positions at 20°, 27.5°, … as for
+    [20, 65], but the point's velocities came out 0.1 % off theirs, the ends turned into radians whole.  They are
+    the same to the 12 digits results.json writes."""
+    turns = 999_999_999_999_720.0
+    assert turns % 360.0 == 0.0
+    fixture = (FIXTURES / "double_rocker_swing.toml").read_text(encoding="utf-8")
+    assert "swing   = [20.0, 65.0]" in fixture
+    velocities = []
+    for name, ends in (("many", f"[{turns + 20.0!r}, {turns + 65.0!r}]"), ("within", "[20.0, 65.0]")):
+        scene = tmp_path / f"{name}.toml"
+        scene.write_text(fixture.replace("swing   = [20.0, 65.0]", f"swing = {ends}"), encoding="utf-8")
+        out = tmp_path / name
+        assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 0
+        document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+        velocities.append([position["points"]["B"]["v"] for position in document["positions"]])
+    capsys.readouterr()
+    for far, near in zip(*velocities, strict=True):
         assert far == pytest.approx(near, rel=1e-10, abs=1e-12)

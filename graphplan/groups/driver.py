@@ -67,7 +67,10 @@ class Crank:
             if ends[0] == ends[1] or abs(ends[1] - ends[0]) >= 360.0:
                 raise SceneError(table.where("swing"), "must span less than a turn: [from, to] in degrees with "
                                  "0 < |to − from| < 360 (leave swing out for a crank that turns round)", list(ends))
-            swing = (math.radians(ends[0]), math.radians(ends[1]))
+            # Whole turns taken off in degrees, where that is exact (the span too: two close floats' difference is):
+            # in radians an angle of many turns keeps only the digits its size leaves after the point.
+            first = math.fmod(ends[0], 360.0)
+            swing = (math.radians(first), math.radians(first + (ends[1] - ends[0])))
         table.done(elsewhere=keys_of_other_tables("driver"))
         return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
                    epsilon=epsilon, swing=swing, rpm=float(table.raw("rpm")) if table.has("rpm") else None)
