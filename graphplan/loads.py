@@ -29,6 +29,7 @@ from .mechanism import Mechanism
 from .motion import Motion, PositionWarning, solve
 from .plans import Plan
 from .positions import PositionSet, in_working_stroke, stroke_extremes
+from .reader import radians_within_a_turn
 from .rounding import largest_finite
 from .scene import LoadSpec, Working
 
@@ -445,7 +446,7 @@ def line_of_action(load: LoadSpec, state: State) -> Vector:
     (:func:`refuse_lines_without_length`), but a sweep between positions may pass one.
     """
     if load.along is None:
-        return unit(np.radians(load.angle_deg))
+        return unit(radians_within_a_turn(load.angle_deg))
     reach = state.points[load.point].r - state.points[load.along].r
     length = np.abs(reach)
     direction = np.where(length > 0, reach / np.where(length > 0, length, 1.0), 0j)

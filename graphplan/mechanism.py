@@ -19,7 +19,7 @@ from .errors import SceneError, as_written
 from .groups import Driver, Group, Guide
 from .groups.sliding import guide_link
 from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
-from .reader import join_path, suggestion
+from .reader import join_path, radians_within_a_turn, suggestion
 from .scene import PointSpec, Scene, not_a_scene
 
 _ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -528,7 +528,7 @@ def _refuse_force_with_no_motion(mechanism: Mechanism, load) -> None:
                          "point that moves, or give it a set sense (resisting = false)")
     guide = _frame_guides(scene).get(load.link)
     # A force along a point's line turns with the mechanism: square to the guide at a position or two, no more.
-    if guide is None or load.along is not None or abs(math.cos(math.radians(load.angle_deg) - guide.angle)) > _SQUARE:
+    if guide is None or load.along is not None or abs(math.cos(radians_within_a_turn(load.angle_deg) - guide.angle)) > _SQUARE:
         return
     raise SceneError(f"{load.where}.resisting", f"{load.point} on link {load.link} moves only along its frame guide "
                      f"(at {math.degrees(guide.angle):g}°), square to the force's line (at {load.angle_deg:g}°), so "

@@ -28,6 +28,7 @@ from .length_units import mixed_units
 from .mechanism import Mechanism
 from .memo import OwnedMemo
 from .motion import Motion, Reference, reference_at, solve
+from .reader import radians_within_a_turn
 from .scene import Working
 
 # Driver positions per cycle of the sweep that brackets the extremes.
@@ -207,9 +208,7 @@ def first_value(mechanism: Mechanism) -> float:
     driver, start = mechanism.driver, mechanism.scene.positions.start
     if not driver.cyclic:
         return float(driver.travel[0])
-    # Whole turns taken off in degrees, where that is exact: in radians an angle of many turns keeps only the digits
-    # its size leaves after the point, and the positions would stand off the angles results.json writes for them.
-    return 0.0 if start == "extreme" else math.radians(math.fmod(float(start), 360.0))
+    return 0.0 if start == "extreme" else radians_within_a_turn(float(start))
 
 
 def _first_assembly(mechanism: Mechanism) -> Reference | None:

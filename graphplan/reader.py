@@ -104,6 +104,13 @@ LARGEST = 1e15
 SMALLEST = 1e-15
 
 
+def radians_within_a_turn(degrees: float) -> float:
+    """An angle a scene gives in degrees, in radians: its whole turns taken off in degrees first, where that is exact
+    (``fmod``), for in radians an angle of many turns keeps only the digits its size leaves after the point, and a
+    direction or position would stand off the angle the drawings and results.json write for it."""
+    return math.radians(math.fmod(degrees, 360.0))
+
+
 def check_number(value: Any, where: str) -> float:
     """``value`` as a finite float of a magnitude graphplan computes with, or a SceneError naming ``where``."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):

@@ -122,3 +122,31 @@ def test_a_swing_of_many_turns_gives_the_motion_of_its_angles_within_the_turn(tm
     capsys.readouterr()
     for far, near in zip(*velocities, strict=True):
         assert far == pytest.approx(near, rel=1e-10, abs=1e-12)
+
+
+def test_directions_of_many_turns_give_the_motion_and_forces_of_their_angles_within_the_turn(tmp_path, capsys) -> None:
+    """A guide's `angle` and a force's `angle` of T + 0° and T + 180°, T = 999 999 999 999 720 a whole number of
+    turns (a magnitude the scene reader takes), are the directions 0° and 180°; turned into radians whole they
+    kept few digits after the point and tilted the piston's guide and the gas force off them.  The piston's
+    velocities and the crank's balancing moment are the same as at 0° and 180° to the digits results.json
+    writes."""
+    turns = 999_999_999_999_720.0
+    assert turns % 360.0 == 0.0
+    fixture = (FIXTURES / "engine_slider_crank.toml").read_text(encoding="utf-8")
+    guide, force = 'guide    = { through = "O", angle = 0.0 }', "angle     = 180.0"
+    assert guide in fixture and force in fixture
+    found = []
+    for name, offset in (("many", turns), ("within", 0.0)):
+        scene = tmp_path / f"{name}.toml"
+        scene.write_text(fixture.replace(guide, guide.replace("0.0 }", f"{offset + 0.0!r} }}")).replace(
+            force, f"angle = {offset + 180.0!r}"), encoding="utf-8")
+        out = tmp_path / name
+        assert main(["run", str(scene), "--out", str(out), "--only", "velocity,forces"]) == 0
+        found.append((out / "results.json").read_text(encoding="utf-8"))
+    capsys.readouterr()
+    many, within = (json.loads(text) for text in found)
+    for far, near in zip(many["positions"], within["positions"], strict=True):
+        assert far["points"]["B"]["v"] == pytest.approx(near["points"]["B"]["v"], rel=1e-10, abs=1e-12)
+        assert far["points"]["B"]["r"] == pytest.approx(near["points"]["B"]["r"], rel=1e-10, abs=1e-12)
+        assert far["equilibrium"]["balancing_moment"] == pytest.approx(near["equilibrium"]["balancing_moment"],
+                                                                      rel=1e-9, abs=1e-9)

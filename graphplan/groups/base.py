@@ -8,7 +8,6 @@ at once.  The registry in ``groups/__init__.py`` maps ``kind`` to the class.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
@@ -17,7 +16,7 @@ import numpy as np
 
 from ..errors import SceneError, SingularPositionError
 from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector
-from ..reader import Table, check_str, check_xy
+from ..reader import Table, check_str, check_xy, radians_within_a_turn
 
 # Below this sine of the angle between two lines of action a position is
 # treated as exactly singular: the velocities are not determined by the
@@ -78,7 +77,7 @@ def read_guide(value: object, where: str) -> Guide:
         through: str | tuple[float, float] = check_str(through_raw, table.where("through"))
     else:
         through = check_xy(through_raw, table.where("through"))
-    angle = math.radians(table.number("angle", 0.0))
+    angle = radians_within_a_turn(table.number("angle", 0.0))
     table.done()
     return Guide(where=where, link=link, through=through, angle=angle, angle_given=table.has("angle"))
 

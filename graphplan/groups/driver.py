@@ -29,7 +29,7 @@ from ..kinematics import (
     unit_vectors,
 )
 from ..plans import Builder, LaidVector, Plan, Step
-from ..reader import Table
+from ..reader import Table, radians_within_a_turn
 from ..rounding import ANGLE_FLOOR_DEG
 from ..table_keys import keys_of_other_tables
 from .base import Context, GroupMotion, Guide, read_guide
@@ -67,10 +67,10 @@ class Crank:
             if ends[0] == ends[1] or abs(ends[1] - ends[0]) >= 360.0:
                 raise SceneError(table.where("swing"), "must span less than a turn: [from, to] in degrees with "
                                  "0 < |to − from| < 360 (leave swing out for a crank that turns round)", list(ends))
-            # Whole turns taken off in degrees, where that is exact (the span too: two close floats' difference is):
-            # in radians an angle of many turns keeps only the digits its size leaves after the point.
+            # The span is kept as typed, a difference of two close floats (exact), from the first end's angle within
+            # the turn.
             first = math.fmod(ends[0], 360.0)
-            swing = (math.radians(first), math.radians(first + (ends[1] - ends[0])))
+            swing = (radians_within_a_turn(first), math.radians(first + (ends[1] - ends[0])))
         table.done(elsewhere=keys_of_other_tables("driver"))
         return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
                    epsilon=epsilon, swing=swing, rpm=float(table.raw("rpm")) if table.has("rpm") else None)

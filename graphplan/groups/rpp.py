@@ -30,7 +30,7 @@ from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, unit
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, image_name
-from ..reader import Table
+from ..reader import Table, radians_within_a_turn
 from .base import UNREAD_GUIDE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch, turns
 from .sliding import (
     coriolis,
@@ -56,12 +56,12 @@ class RPP(Group):
     def read(cls, table: Table, links: tuple[int, int], joints: tuple[str, ...]) -> RPP:
         guide = read_guide(table.raw("guide"), table.where("guide"))
         angle_deg = table.number("angle", 90.0)
-        if abs(math.sin(math.radians(angle_deg))) < 1e-9:
+        if abs(math.sin(radians_within_a_turn(angle_deg))) < 1e-9:
             raise SceneError(table.where("angle"), "the slot must not be parallel to the guide", angle_deg)
         refuse_branch(table, "an RPP has one assembly: B is where link b's slot, through A at angle degrees to the "
                       "guide, crosses the guide")
         table.done()
-        return cls(where=table.path, links=links, joints=joints, guide=guide, angle=math.radians(angle_deg))
+        return cls(where=table.path, links=links, joints=joints, guide=guide, angle=radians_within_a_turn(angle_deg))
 
     def known_joints(self) -> tuple[str, ...]:
         return (self.joints[0],)

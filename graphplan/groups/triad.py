@@ -45,7 +45,7 @@ from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line, cross_lines
 from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
-from ..reader import Table, check_xy
+from ..reader import Table, check_xy, radians_within_a_turn
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
 from .sliding import (
@@ -1111,7 +1111,7 @@ def _read_sliding_legs(table: Table, joints: tuple[str, ...]) -> tuple[Guide | N
             raise SceneError(spec.where("through"), f"the guide of the sliding leg {outer}{name} runs through its "
                                                     f"outer joint {outer}: place {outer} where the guide should pass")
         link = spec.integer("link", None, minimum=1)
-        angle = math.radians(spec.number("angle", 0.0))
+        angle = radians_within_a_turn(spec.number("angle", 0.0))
         spec.done()
         legs[leg] = Guide(where=spec.path, link=link, through=outer, angle=angle, angle_given=spec.has("angle"),
                           through_given=False)
@@ -1127,7 +1127,7 @@ def _read_slotted_legs(table: Table, joints: tuple[str, ...], leg_guides) -> tup
             raise SceneError(spec.path, f"the leg {joints[2 * leg]}{name} already slides on a guide through "
                                         f"{joints[2 * leg]} (guides.{name}); a leg slides either on a guide or in "
                                         f"a slot of the ternary link, not both")
-        legs[leg] = math.radians(spec.number("angle", 0.0))
+        legs[leg] = radians_within_a_turn(spec.number("angle", 0.0))
         spec.done()
     return legs[0], legs[1], legs[2]
 
