@@ -259,6 +259,7 @@ def require_moving(motion: Motion, working: Working | None = None) -> None:
         named = {spec.name for spec in mechanism.scene.points}
         size = max(float(np.max(np.abs(point.r))) for name, point in motion.points.items() if name not in named)
         travel, rest, unit = float(np.ptp(along)), 1e-9 * max(size, 1e-300), "m"
+        _refuse_far_from_the_origin(motion, named, working.link, travel, rest)
     else:
         angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)
         travel, rest, unit = float(np.ptp(np.angle(np.exp(1j * (angle - angle[0]))))), 1e-9, "rad"
@@ -268,6 +269,22 @@ def require_moving(motion: Motion, working: Working | None = None) -> None:
                          f"{travel:.3g} {unit}, so it has no strokes and its kinematic diagrams nothing to draw; "
                          "name a link the mechanism moves, or check the lengths and guides that should move it",
                          working.link)
+
+
+def _refuse_far_from_the_origin(motion: Motion, named: set[str], link: int, travel: float, rest: float) -> None:
+    """Refuse a frame placed so far from the origin that a stroke which moves against the mechanism's own size is
+    within what a position there is told from rest by (the rest weighed against the joints' distance from the
+    origin): told at the frame point that stands farthest, not as a link at rest with its travel beside it."""
+    joints = np.concatenate([np.ravel(point.r) for name, point in motion.points.items() if name not in named])
+    across = max(float(np.ptp(joints.real)), float(np.ptp(joints.imag)))
+    frame = motion.mechanism.scene.frame_points
+    if not (1e-9 * across < travel <= rest) or not frame:
+        return
+    name = max(frame, key=lambda each: abs(frame[each]))
+    raise SceneError(f"frame.points.{name}", f"stands {abs(frame[name]):.3g} m from the origin, where a position is "
+                     f"told from rest only to {rest:.3g} m, more than link {link}'s travel of {travel:.3g} m on a "
+                     f"mechanism {across:.3g} m across: place the frame points near the origin",
+                     [frame[name].real, frame[name].imag])
 
 
 def in_working_stroke(motion: Motion, working: Working | None = None) -> np.ndarray:

@@ -150,3 +150,23 @@ def test_directions_of_many_turns_give_the_motion_and_forces_of_their_angles_wit
         assert far["points"]["B"]["r"] == pytest.approx(near["points"]["B"]["r"], rel=1e-10, abs=1e-12)
         assert far["equilibrium"]["balancing_moment"] == pytest.approx(near["equilibrium"]["balancing_moment"],
                                                                       rel=1e-9, abs=1e-9)
+
+
+def test_a_mechanism_far_from_the_origin_is_told_at_the_frame_point_not_as_a_piston_at_rest(tmp_path, capsys) -> None:
+    """The central slider-crank with its pivot O at x = 1e9 m was refused with "link 4 does not move over the
+    crank's turn: its travel is 0.1 m": a travel of 2r = 0.1 m told as rest, for rest was weighed against the
+    joints' distance from the origin, not against the mechanism's size.  Placed at 1e9 m a position is told from
+    rest only to 1e-9 of that, 1 m, which hides the stroke: the error names the frame point that stands so far
+    and leaves the piston's 0.1 m stroke out of it; and at 1e3 m, where that is 1 µm, the same mechanism is
+    checked with its strokes equal (K = 1) as at the origin."""
+    for x in (0.0, 1e3):
+        scene = _scene(tmp_path).read_text(encoding="utf-8").replace("O = [0.0, 0.0]", f"O = [{x!r}, 0.0]")
+        (tmp_path / "near.toml").write_text(scene, encoding="utf-8")
+        assert main(["check", str(tmp_path / "near.toml")]) == 0
+        assert "K = φw/φi = 1.0000" in capsys.readouterr().out
+    far = _scene(tmp_path).read_text(encoding="utf-8").replace("O = [0.0, 0.0]", "O = [1e9, 0.0]")
+    (tmp_path / "far.toml").write_text(far, encoding="utf-8")
+    assert main(["check", str(tmp_path / "far.toml")]) == 2
+    told = capsys.readouterr().err
+    assert told.startswith("graphplan: error: frame.points.O: "), told
+    assert "does not move" not in told and "Traceback" not in told
