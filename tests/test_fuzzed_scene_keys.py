@@ -7,6 +7,7 @@ and the answer a student should get instead."""
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -170,3 +171,23 @@ def test_a_mechanism_far_from_the_origin_is_told_at_the_frame_point_not_as_a_pis
     told = capsys.readouterr().err
     assert told.startswith("graphplan: error: frame.points.O: "), told
     assert "does not move" not in told and "Traceback" not in told
+
+
+def test_a_plan_larger_than_any_paper_is_given_the_pole_that_draws_it_at_its_size(tmp_path, capsys) -> None:
+    """The tangent mechanism with its ram's guide offset typed 1e7 m draws its velocity plan 2.4e9 mm across at
+    `velocity_pole = 100`, and was told "give 1 (a 150 mm plan)": the pole that fits, under a millimetre, was
+    rounded up to 1, which draws the plan 2.4e7 mm across.  A plan's size is in proportion to its pole: the pole
+    told draws it at the 150 mm said, to the two digits it is told in."""
+    fixture = (FIXTURES / "tangent_mechanism_prp.toml").read_text(encoding="utf-8")
+    assert "offsets = [0.0, 0.0]" in fixture and "velocity_pole      = 100.0" in fixture
+    scene = tmp_path / "far_offset.toml"
+    scene.write_text(fixture.replace("offsets = [0.0, 0.0]", "offsets = [1e7, 0.0]"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 2
+    told = capsys.readouterr().err
+    assert not out.exists()
+    found = re.search(r"drawing\.velocity_pole: draws the velocity plan of position \d+ ([0-9.e+]+) mm across, "
+                      r"more than any paper \(5000 mm\): give ([0-9.e+-]+) \(a 150 mm plan\)", told)
+    assert found, told
+    across, pole = float(found.group(1)), float(found.group(2))
+    assert across * pole / 100.0 == pytest.approx(150.0, rel=0.06)

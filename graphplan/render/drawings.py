@@ -216,13 +216,20 @@ def _plan_scale(analysis: Analysis, kind: str, plan: Plan, grid: bool = False) -
         every = [position.velocity for position in analysis.velocity_plans]
         pin = analysis.mechanism.driver.joint
         fitting = max(spread(each) for each in every) / VELOCITY_PLANS_FIELD_MM
-        fix = f"{max(1, math.floor(max(abs(each.value(pin)) for each in every) / fitting)):d}"
+        fix = _pole_that_fits(max(abs(each.value(pin)) for each in every) / fitting)
         return "drawing.velocity_plans_pole", drawing.velocity_plans_pole, fix
     fitting = spread(plan) / PLAN_FIELD_MM
     if getattr(drawing, f"{kind}_scale") is not None:
         return f"drawing.{kind}_scale", getattr(drawing, f"{kind}_scale"), format_scale(standard_scale(fitting))
-    fix = f"{max(1, math.floor(abs(plan.value(analysis.mechanism.driver.joint)) / fitting)):d}"
+    fix = _pole_that_fits(abs(plan.value(analysis.mechanism.driver.joint)) / fitting)
     return f"drawing.{kind}_pole", getattr(drawing, f"{kind}_pole"), fix
+
+
+def _pole_that_fits(pole: float) -> str:
+    """The pole distance (mm) that draws a plan as large as its field, ``pole`` at most, as the advice gives it: whole
+    millimetres; under one, in two digits (a plan many times the driver's vector, which a whole millimetre of pole
+    would still draw larger than any paper, is told the pole that fits, not 1)."""
+    return f"{math.floor(pole):d}" if pole >= 1.0 else f"{pole:.2g}"
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:
