@@ -25,6 +25,10 @@ METHODS = ("auto", "RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 
 # The least relative tolerance the solvers take: scipy raises a smaller one to this, with a warning.
 SMALLEST_RTOL = 100 * float(np.finfo(float).eps)
+#: The loosest steady_tolerance: a turn's ωm within 0.1 % of the next's and δ within 0.001, a third of the evenest
+#: machines' (an alternator's 1/300).  A looser one took the start-up's own turns for the steady state (1e6 put it
+#: before the machine had reached its speed), and reported their ωm and δ as the machine's.
+LARGEST_STEADY_TOLERANCE = 1e-3
 # The relative tolerance a run takes unless told: the note gives the steady ωm and δ to four digits, and at
 # 1e-6 the steady cycles' δ wandered in the fourth (a machine with a jump in its resistance: 0.02999 against
 # 0.02997; the class III triad's 0.01991 against 0.01995), for the tenth of a second that 1e-8 costs.
@@ -216,6 +220,9 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     if not (isinstance(rtol, (int, float)) and SMALLEST_RTOL <= rtol < 1):
         raise ValueError(f"rtol: must be from {SMALLEST_RTOL:.3g} (100 machine epsilons, the solvers' least) "
                          f"to below 1 (got {rtol!r})")
+    if not (isinstance(steady_tolerance, (int, float)) and 0 < steady_tolerance <= LARGEST_STEADY_TOLERANCE):
+        raise ValueError(f"steady_tolerance: must be > 0 and at most {LARGEST_STEADY_TOLERANCE:g} "
+                         f"(got {steady_tolerance!r})")
     if duration is not None:
         require_positive("simulate", "duration", duration)
     if atol is not None:

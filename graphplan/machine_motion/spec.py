@@ -17,7 +17,15 @@ from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .method import EndlessRun, refuse_endless_run_down, refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
-from .simulation import DEFAULT_RTOL, METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
+from .simulation import (
+    DEFAULT_RTOL,
+    LARGEST_STEADY_TOLERANCE,
+    METHODS,
+    MOST_CYCLES,
+    SMALLEST_RTOL,
+    MachineMotion,
+    simulate,
+)
 
 # The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
 # duration of many more is a slip of the unit, and would hold the run for hours.
@@ -474,6 +482,11 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
         raise SceneError(table.where("rtol"), f"must be at least {SMALLEST_RTOL:.3g}: 100 machine epsilons, the "
                          "least the solvers take", rtol)
     steady_tolerance = table.number("steady_tolerance", 1e-4, positive=True)
+    if not steady_tolerance <= LARGEST_STEADY_TOLERANCE:
+        raise SceneError(table.where("steady_tolerance"), f"must be at most {LARGEST_STEADY_TOLERANCE:g}: how near "
+                         "successive turns' ωm (relative) and δ must have come for the run to be steady, and a looser "
+                         "one takes turns of the start-up for the steady state and reports their ωm and δ as the "
+                         "machine's", steady_tolerance)
     if not owned:
         table.done(elsewhere=misplaced_keys(table.path, table.path))
     return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start,

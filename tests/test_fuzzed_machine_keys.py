@@ -1,0 +1,67 @@
+"""Scenes a fuzzer of the machine's keys (each of [dynamics]', [balancing]', [vibration]' and [[friction]]' values in
+the starters and fixtures replaced one at a time by another type, nought, a negative, NaN, inf, a power of ten, a
+string; each key deleted, each table emptied) found answered wrongly: each as the small scene it came down to, and
+the answer a student should get instead."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from graphplan.cli import main
+
+
+def _scene(tmp_path: Path, text: str) -> Path:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    return scene
+
+
+def _starter(tmp_path: Path, kind: str) -> str:
+    path = tmp_path / f"{kind}.toml"
+    assert main(["new", kind, "--out", str(path)]) == 0
+    return path.read_text(encoding="utf-8")
+
+
+def _refused(capsys, code: int) -> str:
+    """The one error line of a refusal, with no traceback before it."""
+    assert code == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err
+    return err.strip().splitlines()[-1]
+
+
+# The flywheel starter's press: a 4 kW induction motor through 14.4 starts it from rest and settles at about 100 rpm.
+MOTOR_LINE = 'motor = { kind = "kloss"'
+
+
+@pytest.mark.parametrize("tolerance", [0.5, 1e6])
+def test_a_steady_tolerance_that_takes_the_start_up_for_steady_is_refused_at_its_key(tmp_path, capsys,
+                                                                                      tolerance) -> None:
+    """steady_tolerance is how near a turn's ωm and δ must have come to the next's: 1e6 took the third turn of the
+    start-up for the steady state, and results.json said the press was steady after 2.97 s though it reached its
+    speed only at 3.03 s.  No tolerance of a whole ωm or more tells a steady turn: it is refused at its key, and
+    nothing is written."""
+    text = _starter(tmp_path, "flywheel")
+    assert text.count(MOTOR_LINE) == 1
+    scene = _scene(tmp_path, text.replace(MOTOR_LINE, f"steady_tolerance = {tolerance!r}\n{MOTOR_LINE}"))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith("graphplan: error: dynamics.steady_tolerance: must be at most 0.001"), told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+
+
+def test_the_loosest_steady_tolerance_finds_the_steady_state_after_the_start_up(tmp_path, capsys) -> None:
+    """At the loosest tolerance taken the steady state still begins after the start-up: a machine is not steady
+    before it has come within 5 % of its running speed."""
+    text = _starter(tmp_path, "flywheel")
+    scene = _scene(tmp_path, text.replace(MOTOR_LINE, f"steady_tolerance = 0.001\n{MOTOR_LINE}"))
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["steady"] is True
+    assert motion["steady_after"] >= motion["start_up_time"] > 0
