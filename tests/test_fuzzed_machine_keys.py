@@ -65,3 +65,39 @@ def test_the_loosest_steady_tolerance_finds_the_steady_state_after_the_start_up(
     motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
     assert motion["steady"] is True
     assert motion["steady_after"] >= motion["start_up_time"] > 0
+
+
+# A machine of 2 kg·m² against a constant 50 N·m, driven by a constant 150 N·m through a 60 N·m clutch whose driving
+# half is the motor's 1 kg·m² rotor (tests/test_brake_messages.py's CLUTCHED, the clutch and brake given below).
+MACHINE = ('[scene]\ntitle = "clutched"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+           "resisting_torque = [[0, 50], [360, 50]]\n"
+           'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }\n')
+
+
+@pytest.mark.parametrize(("given", "key", "said"), [
+    ("clutch = { torque = 60.0, engage_at = -1.0 }\nduration = 2.0\n", "dynamics.clutch.engage_at",
+     "must be >= 0"),
+    ("clutch = { torque = 60.0, engage_at = 5.0 }\nduration = 2.0\n", "dynamics.clutch.engage_at",
+     "is at or past the run's end, dynamics.duration = 2 s, so the clutch never engages"),
+    ("clutch = { torque = 60.0, engage_at = 1e6 }\n", "dynamics.clutch.engage_at",
+     "the clutch never engages"),
+    ("brake = { torque = 20.0, at = 5.0 }\nduration = 2.0\n", "dynamics.brake.at",
+     "is at or past the run's end, dynamics.duration = 2 s, so the brake never comes on"),
+    ("brake = { torque = 20.0, at = 1e6 }\n", "dynamics.brake.at", "the brake never comes on"),
+], ids=["clutch-before-the-start", "clutch-after-the-duration", "clutch-after-the-longest-run",
+        "brake-after-the-duration", "brake-after-the-longest-run"])
+def test_a_clutch_or_brake_that_never_acts_within_the_run_is_refused_at_its_key(tmp_path, capsys, given, key,
+                                                                                said) -> None:
+    """A clutch engaged after the run's end left the machine at rest for the whole run, and the run said "no
+    steady state within the run: the machine is still speeding up at ω = 0 rad/s; a longer duration runs it on"
+    (or ran 2000 turns' time to say it); one engaged at -1 s, a slip a brake's `at` is refused for, was taken as
+    engaged from the start.  A brake applied after the run's end was written into the note's equation of motion
+    though it never acted.  Each is refused at its key, as a motor switched off past the run's end is, and nothing
+    is written."""
+    scene = _scene(tmp_path, MACHINE + given)
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith(f"graphplan: error: {key}: "), told
+    assert said in told, told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told

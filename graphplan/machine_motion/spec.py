@@ -147,6 +147,8 @@ class MotionSpec:
                              f"{MOST_TURNS} turns, and runs down once the motor is off: give an off_at of at most "
                              f"{TWO_PI * MOST_TURNS / omega_run:.3g} s", off_at,
                              hint=_exponent_slip(off_at * omega_run / TWO_PI, 0.0, MOST_TURNS))
+        if self.duration is None and off_at is None:
+            self._refuse_after_the_longest_run(MOST_CYCLES * TWO_PI / omega_run)
         # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
         # than a run integrates, each resolved step by step: the run would hang rather than fail.
         driving = self.start.driving_omega or 0.0
@@ -165,6 +167,19 @@ class MotionSpec:
                              f"speed, {omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} "
                              f"turns, and it integrates at most {MOST_TURNS}{typed}")
 
+
+    def _refuse_after_the_longest_run(self, longest: float) -> None:
+        """Raise :class:`SceneError` at a clutch's ``engage_at`` or a brake's ``at`` past ``longest`` s, the time a
+        run with no duration and no run-down ends by (:data:`MOST_CYCLES` turns' without a steady state): it never
+        acts, and the run said only that the machine was still speeding up, at ω = 0 behind a clutch never engaged."""
+        for key, at, never in (("clutch.engage_at", self.clutch.engage_at if self.clutch else None, "engages"),
+                               ("brake.at", self.brake.at if self.brake else None, "comes on")):
+            if at is not None and at >= longest:
+                thing = key.partition(".")[0]
+                raise SceneError(self._key(key), f"is past {longest:.4g} s, the {MOST_CYCLES} turns' time at the "
+                                 f"running speed that a run with no duration ends by, so the {thing} never {never}: "
+                                 f"give a {self._key('duration')} past it, or an earlier {key.partition('.')[2]}",
+                                 at, hint=_exponent_slip(at, 0.0, longest))
 
     def _refuse_stiff_brake(self, machine: Machine, period: float) -> None:
         """Raise :class:`SceneError` at ``brake.damping`` for a brake's damping whose time constant J/c, J the least
@@ -390,7 +405,9 @@ def _read_brake(table: Table) -> Brake:
 
 
 def _read_clutch(table: Table) -> Clutch:
-    clutch = Clutch(torque=table.number("torque", positive=True), engage_at=table.number("engage_at", 0.0),
+    # A clutch engaged before the run starts would be engaged from its start: a negative time is a slip, as a brake's.
+    clutch = Clutch(torque=table.number("torque", positive=True),
+                    engage_at=table.number("engage_at", 0.0, non_negative=True),
                     inertia=table.number("inertia", 0.0, non_negative=True))
     table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return clutch
@@ -474,6 +491,14 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
         raise SceneError(motor_table.where("off_at"), f"is at or past the run's end, {table.where('duration')} = "
                          f"{duration:g} s, so the motor is never switched off: give an off_at below the duration to "
                          "see the run-down, or leave it out", off_at)
+    for owner, key, at, never in ((clutch_table, "engage_at", clutch.engage_at if clutch else None, "engages"),
+                                  (brake_table, "at", brake.at if brake else None, "comes on")):
+        if at is not None and duration is not None and at >= duration:
+            # The run ends before the clutch or brake acts: it would be described as acting, and never be seen to.
+            thing = owner.path.rpartition(".")[2]
+            raise SceneError(owner.where(key), f"is at or past the run's end, {table.where('duration')} = "
+                             f"{duration:g} s, so the {thing} never {never}: give {key} below the duration, or leave "
+                             f"the {thing} out", at)
     method = table.choice("method", METHODS, "auto")
     rtol = table.number("rtol", DEFAULT_RTOL, positive=True)
     if not rtol < 1:
