@@ -101,3 +101,25 @@ def test_a_clutch_or_brake_that_never_acts_within_the_run_is_refused_at_its_key(
     assert said in told, told
     assert not out.exists()
     assert _refused(capsys, main(["check", str(scene)])) == told
+
+
+def test_a_clutch_engaged_later_too_weak_to_move_the_machine_is_told_as_a_stall(tmp_path, capsys) -> None:
+    """A 20 N·m clutch against 50 N·m of resistance cannot move the machine: engaged at the start, the run stops
+    there and says so, but engaged at 0.5 s the run went on to its end (without a duration, to 2000 turns' time)
+    and warned that the machine was "still speeding up at ω = 0 rad/s" and that "a longer duration runs it on".
+    It is the stall it is engaged at the start, the clutch's torque named against Mr, from the time it engaged."""
+    torque, resisting, engaged = 20.0, 50.0, 0.5
+    scene = _scene(tmp_path, MACHINE + f"clutch = {{ torque = {torque}, engage_at = {engaged} }}\nduration = 2.0\n")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+    said = capsys.readouterr()
+    assert "Traceback" not in said.err
+    told = said.out + said.err
+    assert "still speeding up" not in told and "a longer [dynamics] duration" not in told, told
+    assert (f"the machine does not start: at rest at φ = 0° the clutch, slipping at its {torque:g} N·m, does not "
+            f"overcome the resistance there, {resisting:g} N·m") in told, told
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["stalled_at"] == pytest.approx(engaged)
+    assert motion["clutch_locked_at"] is None
+    assert motion["stalled_at_angle_deg"] == 0.0
+    assert motion["duration"] == pytest.approx(engaged)

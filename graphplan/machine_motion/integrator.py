@@ -230,6 +230,8 @@ class Integrator:
         self.states: list[np.ndarray] = []
         self.events: list[tuple[float, str]] = []
         self.finished = False
+        # When a clutch engaged after the start found the machine held at rest for good (None: it did not).
+        self.held_from: float | None = None
         self.nfev = self.njev = self.nlu = 0
         self._stalls = 0
         equations.clock = self.t
@@ -403,6 +405,11 @@ class Integrator:
         eq = self.eq
         if eq.clutch is not None and eq.clutch.engage_at == t and self.phase == OPEN:
             self.phase = self._engaged_phase()
+            # A clutch engaged later than the start that slips with the machine held at rest ends the run there, as
+            # one engaged at the start does: the run went on to its end saying the machine "still speeds up at ω = 0".
+            self._finish_if_held_at_rest()
+            if self.finished:
+                self.held_from = t
         elif self.phase == LOCKED and abs(self._needed_torque(t)) > eq.clutch.torque * (1.0 + 1e-12):
             self.events.append((t, "clutch slips"))
             self.phase = SLIP_FORWARD if self._needed_torque(t) > 0 else SLIP_BACKWARD

@@ -315,7 +315,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     stops = [when for when, name in integrator.events if name == "stopped"]
     stopped_at = stops[-1] if stops and y[1, -1] == 0.0 else None
     stalled_at = start.time if never_starts else (
-        stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else None)
+        stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else integrator.held_from)
     motion = MachineMotion(t=t, phi=y[0], omega=y[1], driving_omega=y[2] if clutch is not None else None,
                            motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
                            stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
