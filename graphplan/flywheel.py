@@ -57,6 +57,9 @@ _CONSTANT_SHARE = 1e-9
 #: not the small-δ ωm²·(1 ± δ)/2), so it is not refused; but a speed swinging ωmax/ωmin = (2 + δ)/(2 − δ) is no
 #: steady running, and such a δ is more likely a percentage typed for a fraction: it is warned of.
 LARGEST_USUAL_DELTA = 0.2
+#: The smallest δ a flywheel is sized for: the evenest machines, alternators, run at some 1/300.  δ = 1e-14 sized a
+#: press's flywheel 1e14 times too heavy for its motor to bring to speed, and the run advised a longer duration.
+SMALLEST_DELTA = 1e-4
 
 
 # --- standalone: a cycle of torque or power ---------------------------------------------------
@@ -525,6 +528,11 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
                 raise SceneError(table.where(key), f"is for {what}; this scene's positions run once over {once_over}, "
                                  "over which [dynamics] gives the equivalent model only: leave it out")
     delta = table.number("delta", None, positive=True)
+    if delta is not None and delta < SMALLEST_DELTA:
+        raise SceneError(table.where("delta"), f"must be at least {SMALLEST_DELTA:g}: the evenest machines, "
+                         "alternators, run at some 1/300 = 0.0033, and the flywheel for delta is ΔWmax/(ωm²·δ), "
+                         f"{SMALLEST_DELTA / delta:.3g} times the one for {SMALLEST_DELTA:g} here", delta,
+                         hint="; a slip of the exponent?" if delta < SMALLEST_DELTA / 1000 else "")
     if delta is not None and not delta < 2:
         # δ = 5 for 5 % is the slip a student makes; delta_warning tells it below 2, this refusal must as well.
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta,

@@ -123,3 +123,32 @@ def test_a_clutch_engaged_later_too_weak_to_move_the_machine_is_told_as_a_stall(
     assert motion["clutch_locked_at"] is None
     assert motion["stalled_at_angle_deg"] == 0.0
     assert motion["duration"] == pytest.approx(engaged)
+
+
+@pytest.mark.parametrize("delta", [1e-14, 1e-6, 5e-5])
+def test_a_delta_no_machine_runs_at_is_refused_at_its_key(tmp_path, capsys, delta) -> None:
+    """δ = 1e-14 sized the press's flywheel at ΔWmax/(ωm²·δ), some 1e14 times the one for δ = 0.05, which its 4 kW
+    motor then ran for 2000 turns' time without bringing it to speed, and the run advised "a longer duration runs it
+    on".  The evenest machines, alternators, run at δ of some 1/300: a δ below 0.0001 is refused at its key, and
+    nothing is written."""
+    text = _starter(tmp_path, "flywheel")
+    assert text.count("delta = 0.05 ") == 1
+    scene = _scene(tmp_path, text.replace("delta = 0.05 ", f"delta = {delta!r} "))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith("graphplan: error: dynamics.delta: must be at least 0.0001"), told
+    assert not out.exists()
+
+
+def test_the_smallest_delta_taken_sizes_the_flywheel_in_proportion(tmp_path, capsys) -> None:
+    """At δ = 0.0001 the flywheel is sized, 500 times the starter's for δ = 0.05, as JF = ΔWmax/(ωm²·δ) − Je
+    (the starter's Je is 0)."""
+    text = _starter(tmp_path, "flywheel")
+    found = {}
+    for delta in (0.05, 0.0001):
+        out = tmp_path / f"out{delta}"
+        scene = _scene(tmp_path, text.replace("delta = 0.05 ", f"delta = {delta!r} ").replace(MOTOR_LINE, "# "))
+        assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+        found[delta] = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]
+    assert found[0.0001]["flywheel_inertia"] == pytest.approx(500 * found[0.05]["flywheel_inertia"], rel=1e-9)
