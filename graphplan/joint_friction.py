@@ -154,7 +154,8 @@ def check_journals(friction: tuple[FrictionPair, ...], mechanism: Mechanism, mot
             f"makes the friction circle at {pair.joint} ρ = f·r = {f:g} × {radius:g} m = {pair.radius:.4g} m, larger "
             f"than the links the journal joins ({joined}): no pair of materials rubs so hard (f is about 0.1 in a "
             f"journal, rarely above 1 in any pair), and the reactions would pass farther from the pin than the "
-            f"links reach; f is a coefficient, not a percentage ({f:g} % is f = {f / 100.0:g})"), f)
+            f"links reach; f is a coefficient, not a percentage" +
+            (f" ({f:g} % is f = {f / 100.0:g})" if f / 100.0 <= UNUSUAL_F else "")), f)
 
 
 # Dry steel on steel rubs at 0.15 to 0.8, lubricated pairs at about 0.1: an f above this is a slip (a percentage)
@@ -170,9 +171,11 @@ def unusual_coefficients(friction: tuple[FrictionPair, ...]) -> tuple[PositionWa
     if not told:
         return ()
     first = next(pair.spec.f for pair in friction if pair.spec.f > UNUSUAL_F)
+    # Asked only where the percentage is an f a pair has: 1e6 "% is f = 10000" sent the student further astray.
+    percentage = (f": is it a percentage? ({first:g} % is f = {first / 100.0:g})" if first / 100.0 <= UNUSUAL_F
+                  else "")
     return (PositionWarning(0, "high-friction", "; ".join(told) + ": few pairs of materials rub with an f above 1 "
-                            "(dry steel on steel 0.15 to 0.8, lubricated pairs about 0.1): is it a percentage? "
-                            f"({first:g} % is f = {first / 100.0:g})"),)
+                            "(dry steel on steel 0.15 to 0.8, lubricated pairs about 0.1)" + percentage),)
 
 
 def described(pair: FrictionPair) -> str:

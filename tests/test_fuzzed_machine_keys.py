@@ -152,3 +152,23 @@ def test_the_smallest_delta_taken_sizes_the_flywheel_in_proportion(tmp_path, cap
         assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
         found[delta] = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]
     assert found[0.0001]["flywheel_inertia"] == pytest.approx(500 * found[0.05]["flywheel_inertia"], rel=1e-9)
+
+
+@pytest.mark.parametrize(("f", "asked"), [(5.0, True), (100.0, True), (1e6, False)])
+def test_an_unusual_f_is_asked_to_be_a_percentage_only_where_that_gives_a_usual_f(tmp_path, capsys, f, asked) -> None:
+    """An f above 1 on the shaper's ram slide is warned of, asking whether it is a percentage: f = 5 may be 5 %,
+    f = 0.05.  f = 1e6 was asked the same, "(1e+06 % is f = 10000)", an f further from any pair of materials than
+    the one typed.  The question is asked only where the percentage gives an f of at most 1."""
+    text = _starter(tmp_path, "shaper")
+    typed = 'links = [6, 1]\nf     = 0.1\n'
+    assert text.count(typed) == 1
+    scene = _scene(tmp_path, text.replace(typed, typed.replace("0.1", repr(f))))
+    capsys.readouterr()
+    assert main(["check", str(scene)]) == 0
+    said = capsys.readouterr()
+    warning = next(line for line in (said.out + said.err).splitlines()
+                   if line.startswith(f"warning: friction[0].f = {f:g} (at E)"))
+    assert "few pairs of materials rub with an f above 1" in warning
+    percentage = f"is it a percentage? ({f:g} % is f = {f / 100:g})"
+    assert (percentage in warning) is asked, warning
+    assert asked is (f / 100 <= 1)
