@@ -536,7 +536,8 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     if delta is not None and not delta < 2:
         # δ = 5 for 5 % is the slip a student makes; delta_warning tells it below 2, this refusal must as well.
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta,
-                         hint=f"; {percentage_question(delta, 'δ')}")
+                         hint=(f"; {percentage_question(delta, 'δ')}" if delta / 100 < 2 else
+                               "; a slip of the exponent?" if delta >= 2000 else ""))
     speed_key = next((key for key in ("rpm", "omega") if table.has(key)), None)
     omega = table.speed(None, positive=True)
     if speed_key is not None:

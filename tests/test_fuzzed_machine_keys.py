@@ -172,3 +172,25 @@ def test_an_unusual_f_is_asked_to_be_a_percentage_only_where_that_gives_a_usual_
     percentage = f"is it a percentage? ({f:g} % is f = {f / 100:g})"
     assert (percentage in warning) is asked, warning
     assert asked is (f / 100 <= 1)
+
+
+@pytest.mark.parametrize(("key", "typed", "asked"), [
+    ("delta", 5.0, "(5 % is δ = 0.05)"), ("delta", 1e14, None),
+    ("overload", 220.0, "(220 % is overload = 2.2)"), ("overload", 2200.0, None),
+])
+def test_a_value_is_asked_to_be_a_percentage_only_where_the_percentage_is_taken(tmp_path, capsys, key, typed,
+                                                                               asked) -> None:
+    """δ = 1e14 was refused asking "a percentage typed for a fraction? (1e+14 % is δ = 1e+12)", and overload = 2200
+    "(2200 % is overload = 22)": values the same key refuses too.  The question is asked only where the percentage
+    is a value the key takes (δ < 2, 1 < overload < 10)."""
+    text = _starter(tmp_path, "flywheel")
+    given = {"delta": "delta = 0.05 ", "overload": "overload = 2.2,"}[key]
+    assert text.count(given) == 1
+    scene = _scene(tmp_path, text.replace(given, given.replace(given.split("= ")[1].strip(" ,"), repr(typed))))
+    capsys.readouterr()
+    told = _refused(capsys, main(["check", str(scene)]))
+    assert told.startswith(f"graphplan: error: dynamics.{'motor.' if key == 'overload' else ''}{key}: "), told
+    if asked is None:
+        assert "percentage" not in told, told
+    else:
+        assert asked in told, told

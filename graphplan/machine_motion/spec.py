@@ -273,7 +273,7 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         if not overload < LARGEST_OVERLOAD:
             # A catalogue's "Mmax/MN = 220 %" typed as 220; Kloss' formula would take it without a murmur.
             typed = (f"; a percentage typed for the ratio? ({overload:g} % is overload = {overload / 100:g})"
-                     if overload >= 100 else "")
+                     if 100 < overload < 100 * LARGEST_OVERLOAD else "")
             raise SceneError(table.where("overload"), f"must be below {LARGEST_OVERLOAD:g}: an induction motor's "
                              "breakdown torque is some 1.6 to 3.5 times its rated one", overload, hint=typed)
         given = [k for k in ("synchronous_rpm", "rated_rpm", "rated_slip") if table.has(k)]
