@@ -666,7 +666,8 @@ def damping_words(zeta: float, text: Mapping[str, str], written: Callable[[float
     question = text["percentage_question"].format(value=written(zeta), symbol="ζ", fraction=written(zeta / 100))
     if zeta == 1:
         return text["note_vib_damping_critical"].format(zeta=written(zeta), creeps=creeps, question=question)
-    asked = text["semicolon"] + question if zeta >= 2 else ""
+    # From 100 up the percentage is no mount's ζ either: 1e6 "% is ζ = 10000" sent the student further astray.
+    asked = text["semicolon"] + question if 2 <= zeta < 100 else ""
     return text["note_vib_damping_over_critical"].format(zeta=written(zeta), creeps=creeps, question=asked)
 
 

@@ -194,3 +194,23 @@ def test_a_value_is_asked_to_be_a_percentage_only_where_the_percentage_is_taken(
         assert "percentage" not in told, told
     else:
         assert asked in told, told
+
+
+@pytest.mark.parametrize(("zeta", "asked"), [(5.0, True), (1e6, False)])
+def test_an_over_critical_damping_ratio_is_asked_to_be_a_percentage_only_where_that_is_a_mounts(tmp_path, capsys,
+                                                                                               zeta, asked) -> None:
+    """The rotor starter's mounts given ζ = 5 are warned over-critical and asked whether 5 % (ζ = 0.05) was meant;
+    ζ = 1e6 was asked the same, "(1e+06 % is ζ = 10000)", a ζ as over-critical as the one typed.  Asked only where
+    the percentage is below 1, a ratio a mount damps at."""
+    text = _starter(tmp_path, "rotor")
+    typed = "damping_ratio = 0.1 "
+    assert text.count(typed) == 1
+    scene = _scene(tmp_path, text.replace(typed, f"damping_ratio = {zeta!r} "))
+    capsys.readouterr()
+    assert main(["check", str(scene)]) == 0
+    said = capsys.readouterr()
+    warning = next(line for line in (said.out + said.err).splitlines()
+                   if line.startswith("warning: vibration.damping_ratio: "))
+    assert f"ζ = {zeta:g} is over-critical (above 1)" in warning
+    assert (f"({zeta:g} % is ζ = {zeta / 100:g})" in warning) is asked, warning
+    assert asked is (zeta / 100 < 1)
