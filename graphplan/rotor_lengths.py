@@ -106,12 +106,12 @@ class Implausible:
     """One length of the scene that no machine has, as metres.
 
     ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``flat_rotor``, ``thin_disc``,
-    ``rotor_length``,
-    ``eccentricity``, ``light_machine``, ``diameter``, ``second_moment``, ``span``, ``base``); ``key`` its key path
-    and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it
+    ``rotor_length``, ``eccentricity``, ``unbalance``, ``light_machine``, ``diameter``, ``second_moment``, ``span``,
+    ``base``); ``key`` its key path and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it
     belongs to; ``other_key`` and ``other`` the second key it is judged against (``mixed``: the correction radius;
     ``rotor_length``: the farthest plane; ``flat_rotor``, ``thin_disc``: the masses' and planes' span along the axis,
-    ``limit`` the ratio; ``light_machine``: the machine's mass, ``limit`` the lightest machine's for its reach), or
+    ``limit`` the ratio; ``light_machine``: the machine's mass, ``limit`` the lightest machine's for its reach;
+    ``unbalance``: the machine's mass, whose whole off the axis m·e needs ``value``/``other`` m), or
     for ``base`` ω (rad/s).
     """
 
@@ -137,6 +137,10 @@ class Implausible:
         if self.kind == "base":
             return (f"{given} m at ω = {self.other:.4g} rad/s moves the base at Y·ω = {self.value * self.other:.4g} "
                     f"m/s, faster than any floor or shaking table (over {self.limit:g} m/s)")
+        if self.kind == "unbalance":
+            return (f"{given} kg·m needs the whole machine, {self.other_key} = {self.other:g} kg, "
+                    f"{self.value / self.other:.6g} m from the axis, farther than any rotor's radius (over "
+                    f"{self.limit:g} m)")
         if self.kind == "light_machine":
             return (f"{given} m puts the unbalanced mass that far from the axis, and the lightest machines that "
                     f"reach so far (a propeller on its motor, a fan, a bicycle's wheel, a wind turbine) weigh at "

@@ -573,6 +573,11 @@ def lengths_in_millimetres(spec: VibrationSpec) -> LengthsInMillimetres | None:
     found = []
     if spec.eccentricity is not None and spec.eccentricity > LARGEST_RADIUS_M:
         found.append(Implausible("eccentricity", "vibration.eccentricity", spec.eccentricity, LARGEST_RADIUS_M))
+    # m·e given whole needs e of at least m·e/M, the whole machine off its axis (unbalanced_mass may be no more than
+    # mass): 1e6 kg·m on 100 kg went unwarned, and wrote an amplitude of 13 km, where the same e given apart is warned.
+    if spec.eccentricity is None and spec.unbalance > LARGEST_RADIUS_M * spec.mass:
+        found.append(Implausible("unbalance", "vibration.unbalance", spec.unbalance, LARGEST_RADIUS_M,
+                                 other_key="vibration.mass", other=spec.mass))
     shaft = spec.shaft
     if shaft is not None:
         if shaft.diameter is not None and shaft.diameter > THICKEST_SHAFT_M:

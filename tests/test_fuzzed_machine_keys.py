@@ -214,3 +214,25 @@ def test_an_over_critical_damping_ratio_is_asked_to_be_a_percentage_only_where_t
     assert f"ζ = {zeta:g} is over-critical (above 1)" in warning
     assert (f"({zeta:g} % is ζ = {zeta / 100:g})" in warning) is asked, warning
     assert asked is (zeta / 100 < 1)
+
+
+def test_an_unbalance_that_would_put_the_whole_machine_beyond_any_rotor_is_warned_of(tmp_path, capsys) -> None:
+    """unbalance = 1e6 kg·m on the rotor starter's 100 kg machine ran without a word and wrote an amplitude of
+    13 km: m·e over M is the least eccentricity the unbalance needs (the whole machine off its axis, as
+    unbalanced_mass may be no more than mass), here 1e4 m, farther than any rotor's radius (150 m), as the same
+    eccentricity given apart is warned of.  Warned of at its key, with that distance."""
+    text = _starter(tmp_path, "rotor")
+    typed = "unbalance     = 0.02 "
+    assert text.count(typed) == 1
+    unbalance, mass = 1e6, 100.0
+    scene = _scene(tmp_path, text.replace(typed, f"unbalance     = {unbalance!r} "))
+    capsys.readouterr()
+    assert main(["check", str(scene)]) == 0
+    said = capsys.readouterr()
+    warning = next((line for line in (said.out + said.err).splitlines() if "vibration.unbalance = " in line), None)
+    assert warning is not None, said.out + said.err
+    assert f"{unbalance / mass:g} m from the axis" in warning and "over 150 m" in warning, warning
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", "ru"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert f"требует сместить от оси всю машину, {mass:g} кг, на {unbalance / mass:g} м" in note

@@ -833,6 +833,8 @@ def _lengths_caution(note: Writer, lengths: LengthsInMillimetres) -> None:
             values["apart"] = note.n(item.value - item.other)
         elif item.kind == "base":
             values["speed"] = note.n(item.value * item.other, 4)
+        elif item.kind == "unbalance":
+            values["distance"] = note.n(item.value / item.other)
         found.append(note.t(f"note_len_{item.kind}", **values))
     from ..rotor_lengths import SOME_IN_MILLIMETRES
 
