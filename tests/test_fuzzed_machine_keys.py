@@ -236,3 +236,25 @@ def test_an_unbalance_that_would_put_the_whole_machine_beyond_any_rotor_is_warne
     assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", "ru"]) == 0
     note = (out / "note.md").read_text(encoding="utf-8")
     assert f"требует сместить от оси всю машину, {mass:g} кг, на {unbalance / mass:g} м" in note
+
+
+@pytest.mark.parametrize(("typed", "given", "key"), [
+    ("mass          = 100.0 ", "mass          = 1e-14 ", "vibration.mass"),
+    ("stiffness     = 1.0e5 ", "shaft = { modulus = 1e-14, diameter = 0.03, length = 0.8 } ", "vibration.shaft"),
+], ids=["mass", "shaft"])
+def test_a_mass_or_stiffness_the_note_writes_as_nought_is_refused_at_its_key(tmp_path, capsys, typed, given,
+                                                                             key) -> None:
+    """The note writes a quantity below 1e-10 as 0, as no machine's is so small: a machine of 1e-14 kg on its mounts
+    ended the run in ZeroDivisionError as the note worked out ωn = √(k/M) with M written 0, and a shaft of modulus
+    1e-14 Pa, k = 48·E·I/L³ some 1e-20 N/m, in ValueError ("stiffness: must be > 0"), after `check` had passed both.
+    Each is refused at its key by run and check alike, and nothing is written."""
+    text = _starter(tmp_path, "rotor")
+    assert text.count(typed) == 1
+    scene = _scene(tmp_path, text.replace(typed, given))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith(f"graphplan: error: {key}: "), told
+    assert "1e-10" in told, told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
