@@ -19,7 +19,7 @@ import dataclasses
 import re
 from collections.abc import Collection, Iterable, Sequence
 
-from ..report.symbols import Symbol, pieces
+from ..report.symbols import Symbol, occurrences, pieces
 from .primitives import USER_LAYERS, Layer, Text
 
 #: A run's place: on the line, below it (an index) or above it (a component).
@@ -66,8 +66,7 @@ def runs(text: str, verbatim: Collection[str] = ()) -> tuple[Run, ...]:
 
 def _drawing_runs(plain: str, verbatim: Collection[str]) -> list[Run]:
     """The runs of a text the note's symbols left plain: the drawings' own shapes in it indexed."""
-    kept = [(found.start(), found.end()) for typed in verbatim if typed
-            for found in re.finditer(rf"(?<!\w){re.escape(typed)}(?!\w)", plain)]
+    kept = [found.span() for found in occurrences(tuple(verbatim)).finditer(plain)] if verbatim else []
     found: list[Run] = []
     done = 0
     for match in _DRAWING_SYMBOL.finditer(plain):

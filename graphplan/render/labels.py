@@ -1320,9 +1320,10 @@ def place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dra
     millimetre into its 1 mm rod, the engine's O on its pivot's hatching, and the slotted lever's A on its block's
     outline.  A leader is kept from running beside a line, nearly along it (``place_labels``' ``leaders_apart``): the
     slider driven mechanism's G was led down beside a stroke of its guide's hatching, reading as one more, and a
-    crank's pivot O led off along the thin lines of the crank's positions.  The labels of one point (a crowded crank pin's number and its primed letters) then stand each in a direction of
-    its own from it (:func:`_each_in_its_own_direction`); ``numbers`` stand already, ``number_leaders`` and ``pins``
-    (grown) are kept clear of.
+    crank's pivot O led off along the thin lines of the crank's positions.  The labels of one point (a crowded crank
+    pin's number and its primed letters) then stand each in a direction of its own from it
+    (:func:`_each_in_its_own_direction`); ``numbers`` stand already, ``number_leaders`` and ``pins`` (grown) are kept
+    clear of.
 
     Where the thin lines leave no clear spot near a point (the crank's pivot, that every crank position's line
     leaves; a swing's ψ on its arc, across the rocker's positions; a centre of mass among the links' thin

@@ -349,6 +349,7 @@ def _dejavu_advances(weight: str):
         glyph = None if is_wide(character) else glyphs.get(ord(character))
         return None if glyph is None else metrics[glyph][0] / units
 
+    # The font kept with its advances: descent_em reads its outlines from the file read here, not read again.
     advance.font = font
     return advance
 

@@ -5,9 +5,10 @@ parallel sign full-width (``N・m``).  It is set run by run instead: the wide
 characters in Noto Sans CJK, the rest in DejaVu Sans, as every other line of
 a drawing.  cairosvg anchors each run of a line on its own (a centred line's
 runs were drawn over one another), so a mixed line is placed from its start
-by its width, measured in the fonts fontconfig gives cairo: fontTools reads
-their advance widths, which cairo's text API sets without kerning.  Without
-fontconfig or the fonts the width is unknown and the line is set in one font.
+by its width: its Chinese measured in the font fontconfig gives cairo (fontTools
+reads its advance widths, which cairo's text API sets without kerning), the rest
+in the DejaVu Sans every text of the drawings is measured in.  Without
+fontconfig or the CJK font the width is unknown and the line is set in one font.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import functools
 import itertools
 import shutil
 
-from .primitives import is_wide
+from .primitives import is_wide, set_width_em
 
 LATIN_FONT = "DejaVu Sans"
 CJK_FONT = "Noto Sans CJK SC"
@@ -33,10 +34,15 @@ def is_mixed(runs: tuple[tuple[str, bool], ...]) -> bool:
 
 
 def width_em(runs: tuple[tuple[str, bool], ...], weight: str) -> float | None:
-    """How wide the runs are set, each in its font, in em; None when a font cannot be found or read."""
+    """How wide the runs are set, each in its font, in em; None when the CJK font cannot be found or read.  The
+    other runs are measured as every text of the drawings is, in the DejaVu Sans matplotlib ships
+    (:func:`~graphplan.render.primitives.set_width_em`): no subprocess asked for a line without Chinese."""
     total = 0.0
     for run, wide in runs:
-        advances = _advances(CJK_FONT if wide else LATIN_FONT, weight)
+        if not wide:
+            total += set_width_em(run, weight)
+            continue
+        advances = _advances(CJK_FONT, weight)
         if advances is None:
             return None
         total += sum(advances(character) for character in run)

@@ -23,7 +23,6 @@ from .primitives import (
     bounds,
     descent_em,
     has_wide,
-    set_width_em,
 )
 from .script_runs import is_mixed, script_runs, width_em
 
@@ -63,16 +62,17 @@ def _lowered(run: str, place: int, size: float) -> float:
 def _segments(item: Text) -> tuple[tuple[str, bool, int], ...]:
     """The runs a text is set in, each in one font and at one place (text, wide, place); empty where it is set whole,
     in one font on the line."""
-    by_place = item.runs or ((item.text, LINE),)
-    segments = tuple((run, wide, place) for text, place in by_place for run, wide in script_runs(text))
-    return segments if item.runs or is_mixed(script_runs(item.text)) else ()
+    if not item.runs:
+        scripts = script_runs(item.text)
+        return tuple((run, wide, LINE) for run, wide in scripts) if is_mixed(scripts) else ()
+    return tuple((run, wide, place) for text, place in item.runs for run, wide in script_runs(text))
 
 
 def _width_em(segments: tuple[tuple[str, bool, int], ...], weight: str, size: float) -> float | None:
     """How wide the segments are set (em of the line's font), or None where a CJK font's widths cannot be read."""
     total = 0.0
     for run, wide, place in segments:
-        width = width_em(((run, True),), weight) if wide else set_width_em(run, weight)
+        width = width_em(((run, wide),), weight)
         if width is None:
             return None
         total += width * _scale(place, size)
@@ -152,9 +152,9 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
                 if place != LINE:
                     span.attribs["font-size"] = _n(size * _scale(place, item.size))
                 # A run's dy moves the line's pen from where the run before it left it.
-                if _lowered(run, place, item.size) != lowered:
-                    span.attribs["dy"] = _n((_lowered(run, place, item.size) - lowered) * size)
-                    lowered = _lowered(run, place, item.size)
+                if (depth := _lowered(run, place, item.size)) != lowered:
+                    span.attribs["dy"] = _n((depth - lowered) * size)
+                    lowered = depth
                 element.add(span)
         attributes.update({"font-size": _n(size), "fill": item.colour})
         if item.weight != "normal":

@@ -145,7 +145,7 @@ def pieces(text: str, verbatim: Collection[str] = ()) -> Iterator[str | Symbol]:
 # many times over (a column's heading on every row), and each was scanned with the symbols' long pattern afresh.
 @functools.lru_cache(maxsize=8192)
 def _pieces(text: str, verbatim: tuple[str, ...]) -> tuple[str | Symbol, ...]:
-    kept = [found.span() for found in _occurrences(verbatim).finditer(text)] if verbatim else []
+    kept = [found.span() for found in occurrences(verbatim).finditer(text)] if verbatim else []
     found: list[str | Symbol] = []
     done = 0
     for match in SYMBOL.finditer(text):
@@ -161,7 +161,7 @@ def _pieces(text: str, verbatim: tuple[str, ...]) -> tuple[str | Symbol, ...]:
 
 
 @functools.lru_cache(maxsize=16)
-def _occurrences(verbatim: tuple[str, ...]) -> re.Pattern[str]:
+def occurrences(verbatim: tuple[str, ...]) -> re.Pattern[str]:
     """A pattern of the texts ``verbatim``, each standing whole: a title "M" is not the M of the symbol M12."""
     return re.compile("|".join(rf"(?<!\w){re.escape(typed)}(?!\w)"
                                for typed in sorted(filter(None, verbatim), key=len, reverse=True)) or "(?!)")
