@@ -53,3 +53,18 @@ def layer_letter_boxes(root, layer_id: str, svg: str = "{http://www.w3.org/2000/
             left = x - {"start": 0.0, "middle": width / 2, "end": width}[text.get("text-anchor", "start")]
             boxes.append((words, shapely.box(left, baseline - 1.15 * cap, left + width, baseline + 0.3 * cap)))
     return boxes
+
+
+def set_off_a_line(letter, start: tuple[float, float], end: tuple[float, float], off_mm: float) -> None:
+    """Move the SVG text element ``letter`` so that the nearest corner of its box (:func:`layer_letter_boxes`') stands
+    ``off_mm`` off the middle of the line from ``start`` to ``end``, square to it, the box reaching away from the line:
+    for the tests that check their own check of a letter on a line's ink."""
+    (x0, y0), (x1, y1) = start, end
+    length = ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5
+    normal = ((y0 - y1) / length, (x1 - x0) / length)
+    corner = ((x0 + x1) / 2 + off_mm * normal[0], (y0 + y1) / 2 + off_mm * normal[1])
+    cap = float(letter.get("font-size")) / FONT_SIZE_PER_CAP
+    width = text_width("".join(letter.itertext()), cap, letter.get("font-weight", "normal"))
+    letter.set("text-anchor", "start")
+    letter.set("x", f"{corner[0] if normal[0] >= 0 else corner[0] - width:.4f}")
+    letter.set("y", f"{corner[1] + 1.15 * cap if normal[1] >= 0 else corner[1] - 0.3 * cap:.4f}")

@@ -18,9 +18,7 @@ from pathlib import Path
 import pytest
 import shapely
 from light_runs import plan_sheets_alone
-from sheet_texts import layer_letter_boxes
-
-from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
+from sheet_texts import layer_letter_boxes, set_off_a_line
 
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"
@@ -92,17 +90,9 @@ def test_a_letter_on_a_vectors_edge_is_on_its_ink_though_clear_of_its_middle(wri
     assert float(shaft.get("stroke-width")) / 2 > 0.1 + WRITTEN_PRECISION_MM
     numbers = [float(n) for n in re.findall(r"-?\d+(?:\.\d+)?", shaft.get("d"))]
     (x0, y0), (x1, y1) = numbers[:2], numbers[2:4]
-    length = ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5
-    # The corner 0.1 mm off the middle of the shaft, square to it; the box reaching away from the shaft from there.
-    normal = ((y0 - y1) / length, (x1 - x0) / length)
-    corner = ((x0 + x1) / 2 + 0.1 * normal[0], (y0 + y1) / 2 + 0.1 * normal[1])
     letter = next(text for layer in root if layer.get("id") == "velocity-labels" for text in layer.findall(f"{SVG}text"))
     words = "".join(letter.itertext())
-    cap = float(letter.get("font-size")) / FONT_SIZE_PER_CAP
-    width = text_width(words, cap, letter.get("font-weight", "normal"))
-    letter.set("text-anchor", "start")
-    letter.set("x", f"{corner[0] if normal[0] >= 0 else corner[0] - width:.4f}")
-    letter.set("y", f"{corner[1] + 1.15 * cap if normal[1] >= 0 else corner[1] - 0.3 * cap:.4f}")
+    set_off_a_line(letter, (x0, y0), (x1, y1), 0.1)
     box = next(box for text, box in letter_boxes(root, "velocity") if text == words)
     assert box.distance(shapely.LineString([(x0, y0), (x1, y1)])) == pytest.approx(0.1, abs=1e-3)
     moved = [found for found in letters_on_ink(root) if found.startswith(f"velocity {words!r} on ")]

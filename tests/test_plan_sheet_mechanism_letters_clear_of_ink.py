@@ -21,9 +21,7 @@ from pathlib import Path
 import pytest
 import shapely
 from light_runs import plan_sheets_alone
-from sheet_texts import layer_letter_boxes
-
-from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
+from sheet_texts import layer_letter_boxes, set_off_a_line
 
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"
@@ -117,16 +115,9 @@ def test_a_letter_on_a_links_edge_is_on_its_ink_though_clear_of_its_middle(writt
                 if path.get("fill", "none") == "none" and len(_points(path.get("d"))) == 2)
     assert float(link.get("stroke-width")) / 2 > 0.2 + WRITTEN_PRECISION_MM
     (x0, y0), (x1, y1) = _points(link.get("d"))
-    length = ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5
-    normal = ((y0 - y1) / length, (x1 - x0) / length)
-    corner = ((x0 + x1) / 2 + 0.2 * normal[0], (y0 + y1) / 2 + 0.2 * normal[1])
     letter = next(text for layer in root if layer.get("id") == "mechanism-labels" for text in layer.findall(f"{SVG}text"))
     words = "".join(letter.itertext())
-    cap = float(letter.get("font-size")) / FONT_SIZE_PER_CAP
-    width = text_width(words, cap, letter.get("font-weight", "normal"))
-    letter.set("text-anchor", "start")
-    letter.set("x", f"{corner[0] if normal[0] >= 0 else corner[0] - width:.4f}")
-    letter.set("y", f"{corner[1] + 1.15 * cap if normal[1] >= 0 else corner[1] - 0.3 * cap:.4f}")
+    set_off_a_line(letter, (x0, y0), (x1, y1), 0.2)
     box = next(box for text, box in letter_boxes(root) if text == words)
     assert box.distance(shapely.LineString([(x0, y0), (x1, y1)])) == pytest.approx(0.2, abs=1e-3)
     assert any(found.startswith(f"{words!r} on ") and "mechanism-links" in found for found in letters_on_ink(root))
