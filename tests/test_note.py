@@ -478,7 +478,9 @@ def test_the_shapers_note_sets_every_index_below_the_line(tmp_path, locale):
     assert not FLAT.findall(text), sorted(set(FLAT.findall(text)))
     # Only a symbol's letter goes before an index: no word of the note is cut into a base and an index (a group's
     # class in the structure formula, II₂(3,4), is a numeral with its order).
-    assert not re.findall(r"[A-Za-zА-Яа-яЁё]{2,}<sub>", re.sub(r"\bI{2,3}<sub>\d</sub>\(", "", page))
+    # A plan's vector runs its points' letters together (ps₂, dbs₆), a short run of small Latin letters before a number.
+    assert not re.findall(r"[A-Za-zА-Яа-яЁё]{2,}<sub>", re.sub(
+        r"\bI{2,3}<sub>\d</sub>\(|(?<!\w)[a-zπσ]{1,2}(?=[a-zπσ]<sub>\d+</sub>(?!\w))", "", page))
 
 
 def test_the_russian_dynamics_symbols_take_their_indices_below_the_line():
@@ -628,10 +630,13 @@ def test_a_speed_given_in_rpm_is_among_the_initial_data_with_omega_worked_out_fr
     assert "| ω2 | " in ratchet and "| n2 |" not in ratchet and "πn2/30" not in ratchet
 
 
-def test_the_speed_in_rpm_takes_its_index_below_the_line_and_the_plans_letter_n3_does_not():
+def test_the_speed_in_rpm_and_the_plans_points_take_their_indices_below_the_line():
     assert symbols_html("n2") == "n<sub>2</sub>"
-    assert symbols_html("πn2/30 = π·1500/30; ⊥ CB через n4; πn4 = 2,99; n4b") == (
-        "πn<sub>2</sub>/30 = π·1500/30; ⊥ CB через n4; πn4 = 2,99; n4b")
+    # A plan's points as the drawings letter them (n₄, s₂, σ₆), in the vectors that run them together; a number and
+    # the drawings' arm of an inertia force are none.
+    assert symbols_html("πn2/30 = π·1500/30; ⊥ CB через n4; πn4 = 2,99; n4b; ps2·μV; b4k5; pσ6; n6′; 1e2; hu4") == (
+        "πn<sub>2</sub>/30 = π·1500/30; ⊥ CB через n<sub>4</sub>; πn<sub>4</sub> = 2,99; n<sub>4</sub>b; "
+        "ps<sub>2</sub>·μ<sub>V</sub>; b<sub>4</sub>k<sub>5</sub>; pσ<sub>6</sub>; n<sub>6</sub>′; 1e2; hu4")
 
 
 def test_a_point_placed_on_another_has_no_length_among_the_initial_data():
