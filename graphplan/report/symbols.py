@@ -2,8 +2,8 @@
 
 The note writes its symbols flat, as plain text allows: ``VBA``, ``aBAτ`` (the plans' ``aBA^τ``), ``aBB4ʳ``,
 ``ω3``, ``μV``, ``R23τ``, ``JF``, ``ΔWmax``, and with a Russian textbook's indices ``Jм``, ``ωср``,
-``ΔTнб``; Assur's special point is an index like a letter (``VDΣ6``); a plan's vectors run their points together
-(``ps2``, ``πn3``: p to s₂, π to n₃, as the drawings letter the points).  :func:`pieces` splits a text into plain runs and
+``ΔTнб``; Assur's special point is an index like a letter (``VDΣ6``); a point is numbered by its link (``A4``, ``Σ6``),
+and a plan's vectors run their points together (``ps2``, ``πn3``: p to s₂, π to n₃), as the drawings letter them.  :func:`pieces` splits a text into plain runs and
 :class:`Symbol` parts (base, index, component), so that the HTML
 (:mod:`graphplan.report.html`) and the LaTeX (:mod:`graphplan.report.latex`)
 each set the indices as sub- and superscripts in their own markup.  Only a
@@ -56,7 +56,7 @@ SYMBOL = re.compile(
     # A group's class with its order in the structure formula (II2(3,4)), which the textbooks set as II₂.
     r"|(?P<base27>III|II|I)(?P<index27>\d)(?=\()"
     r"|(?P<base9>p)(?P<index9>[45])"
-    # (The crank's speed in rev/min, n2 in πn2/30, is indexed as the plans' n3 is: :data:`PLAN_VECTOR`.)
+    # (The crank's speed in rev/min, n2 in πn2/30, is indexed as the plans' n3 is: :data:`NUMBERED_POINTS`.)
     # A motor's synchronous and rated speeds in rev/min in the initial data (ns, nN, nн), given as values: only so,
     # where ns may be a plan's vector from n to s.
     r"|(?P<base33>n)(?P<index33>[sNн])(?= = )"
@@ -88,12 +88,15 @@ SYMBOL = re.compile(
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
-# A vector of a plan as the note writes it, its points' names run together: ps2 (from the pole p to s2), pa4, b4k5,
-# πn3, pσ6, n6′, each point's number an index as the drawings letter it (s₂, n₃).  Only a run of at most three points
-# with a number in it, standing whole, so that no word of the note's languages and no number (1e2) is taken for one;
-# an arm of an inertia force (hu4) is the drawings' own shape, not the vector from h to u₄.
-PLAN_VECTOR = re.compile(r"(?<![\w.′″])(?!h[uи]\d)(?=[a-zπσ′″]*\d)(?:[a-zπσ]\d*[′″]*){1,3}(?![\w])")
-_PLAN_POINT = re.compile(r"([a-zπσ])(\d*)([′″]*)")
+# A point's name with its link's number below, as the drawings letter it: a mechanism's point standing alone (A4, Σ6;
+# a spring's free length L0 and a motor's stall torque M0 alike), and a plan's, whose vectors run their points' names
+# together: ps2 (from the pole p to s₂), pa4, b4k5, πn3, pσ6, n6′.  A plan's run is of at most three points with a
+# number in it, standing whole, so that no word of the note's languages and no number (1e2) is taken for one; a
+# mechanism's point is one capital alone, so that an integrator's name (RK45, DOP853) is none.  An arm of an inertia
+# force (hu4) is the drawings' own shape, not the vector from h to u₄.
+NUMBERED_POINTS = re.compile(rf"(?<![\w.′″])(?:[{CAPITALS}]\d+[′″]*|(?!h[uи]\d)(?=[a-zπσ′″]*\d)(?:[a-zπσ]\d*[′″]*){{1,3}})"
+                             r"(?![\w])")
+_POINT = re.compile(rf"([{CAPITALS}a-zπσ])(\d*)([′″]*)")
 
 # Superscript letters stand for the component they show: aBAⁿ is aBA with an n above.
 _SUPERSCRIPT = {"ⁿ": "n", "ᵏ": "k", "ʳ": "r"}
@@ -138,9 +141,9 @@ def _product(index: str | None, written: str) -> Iterator[str | Symbol]:
     yield Symbol("r", index, "")
 
 
-def _plan_points(vector: str) -> Iterator[str | Symbol]:
-    """A plan's vector as its points, each numbered one a symbol with its number below: ps2 as p and s₂."""
-    for letter, number, primes in _PLAN_POINT.findall(vector):
+def _numbered_points(written: str) -> Iterator[str | Symbol]:
+    """A point or a plan's vector as its points, each numbered one a symbol with its number below: ps2 as p and s₂."""
+    for letter, number, primes in _POINT.findall(written):
         yield Symbol(letter, number, "") if number else letter
         if primes:
             yield primes
@@ -162,13 +165,13 @@ def _pieces(text: str, verbatim: tuple[str, ...]) -> tuple[str | Symbol, ...]:
     kept = [found.span() for found in occurrences(verbatim).finditer(text)] if verbatim else []
     symbols = [match for match in SYMBOL.finditer(text) if not _overlaps(match, kept)]
     taken = kept + [match.span() for match in symbols]
-    vectors = [match for match in PLAN_VECTOR.finditer(text) if not _overlaps(match, taken)]
+    points = [match for match in NUMBERED_POINTS.finditer(text) if not _overlaps(match, taken)]
     found: list[str | Symbol] = []
     done = 0
-    for match in sorted(symbols + vectors, key=lambda match: match.start()):
+    for match in sorted(symbols + points, key=lambda match: match.start()):
         if match.start() > done:
             found.append(text[done:match.start()])
-        found.extend(_symbols(match) if match.re is SYMBOL else _plan_points(match[0]))
+        found.extend(_symbols(match) if match.re is SYMBOL else _numbered_points(match[0]))
         done = match.end()
     if done < len(text):
         found.append(text[done:])
