@@ -20,6 +20,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from dxf_texts import read_text
 
 from graphplan import deliverables
 from graphplan.analysis import analyse
@@ -90,13 +91,26 @@ def read_svg(svg: str) -> dict:
             turned = re.match(r"rotate\((-?[\d.]+)", element.get("transform") or "")
             texts.append({"text": "".join(element.itertext()), "x": float(element.get("x")),
                           "y": float(element.get("y")), "size": float(element.get("font-size")),
-                          "anchor": element.get("text-anchor"), "runs": len(element) > 0,
+                          "anchor": element.get("text-anchor"),
                           "rotation": -float(turned.group(1)) % 360.0 if turned else 0.0})
     return {"size": (width, height), "paths": paths, "circles": circles, "texts": texts}
 
 
 def read_dxf(data: bytes):
     return ezdxf.read(io.StringIO(data.decode("utf-8")))
+
+
+def read_placed(entity) -> dict:
+    """What a TEXT or an MTEXT (a text with indices) reads as, and where it stands: its baseline point, its height,
+    its alignment and its turn."""
+    if entity.dxftype() == "MTEXT":
+        # Attached by the bottom of its line, its baseline, at the left, the centre or the right.
+        return {"text": read_text(entity), "at": entity.dxf.insert, "height": entity.dxf.char_height,
+                "anchor": {7: "start", 8: "middle", 9: "end"}[entity.dxf.attachment_point],
+                "rotation": entity.get_rotation() % 360.0, "runs": True}
+    return {"text": entity.dxf.text, "at": entity.dxf.insert if entity.dxf.halign == 0 else entity.dxf.align_point,
+            "height": entity.dxf.height, "anchor": {0: "start", 1: "middle", 2: "end"}[entity.dxf.halign],
+            "rotation": entity.dxf.rotation % 360.0, "runs": False}
 
 
 def near(point, points, tolerance=SVG_ROUNDING * 2) -> bool:
@@ -121,13 +135,13 @@ def test_dxf_of_a_sheet_is_in_millimetres_its_extents_the_sheet_and_nothing_off_
                              ("$LIMMIN", (0.0, 0.0)), ("$LIMMAX", (width, height))):
         assert document.header[corner][:2] == pytest.approx(expected), corner
     space = document.modelspace()
-    drawn = bbox.extents(entity for entity in space if entity.dxftype() != "TEXT")
+    drawn = bbox.extents(entity for entity in space if entity.dxftype() not in ("TEXT", "MTEXT"))
     assert (*drawn.extmin.vec2, *drawn.extmax.vec2) == pytest.approx((0.0, 0.0, width, height), abs=1e-6)
     # The texts too, measured in their own fonts (or estimated where ezdxf finds none), stay on the paper.
-    for entity in space.query("TEXT"):
+    for entity in space.query("TEXT MTEXT"):
         box = bbox.extents([entity])
-        assert box.extmin.x >= 0.0 and box.extmin.y >= 0.0, entity.dxf.text
-        assert box.extmax.x <= width and box.extmax.y <= height, entity.dxf.text
+        assert box.extmin.x >= 0.0 and box.extmin.y >= 0.0, read_text(entity)
+        assert box.extmax.x <= width and box.extmax.y <= height, read_text(entity)
     assert {entity.dxf.layer for entity in space} <= KNOWN_LAYERS
 
 
@@ -180,14 +194,13 @@ def test_dxf_texts_are_the_svg_s_at_its_places_heights_and_turns_in_their_own_sc
     # R2007 and later are UTF-8 whatever $DWGCODEPAGE says: the words stand in the file as they read.
     assert document.dxfversion >= "AC1021"
     assert "\\U+" not in raw
-    read = [{"text": entity.dxf.text, "at": entity.dxf.insert if entity.dxf.halign == 0 else entity.dxf.align_point,
-             "height": entity.dxf.height, "anchor": {0: "start", 1: "middle", 2: "end"}[entity.dxf.halign],
-             "rotation": entity.dxf.rotation % 360.0} for entity in document.modelspace().query("TEXT")]
+    read = [read_placed(entity) for entity in document.modelspace().query("TEXT MTEXT")]
     assert sorted(text["text"] for text in read) == sorted(text["text"] for text in svg["texts"])
     script = {"ru": r"[а-яА-Я]", "zh": r"[\u4e00-\u9fff]", "en": r"[A-Za-z]"}
     locale = "zh" if any(re.search(script["zh"], text["text"]) for text in read) else \
         "ru" if any(re.search(script["ru"], text["text"]) for text in read) else "en"
-    assert all(text["text"] in raw for text in read if re.search(script[locale], text["text"]))
+    # An MTEXT's words stand between its codes for the indices.
+    assert all(text["text"] in raw for text in read if re.search(script[locale], text["text"]) and not text["runs"])
     # DejaVu Sans and Noto Sans CJK have caps 0.73 and 0.733 em high: a TEXT's height is its cap height.
     ratios = [text["size"] / dxf["height"] for text, dxf in zip(svg["texts"], read, strict=True)]
     assert ratios == pytest.approx([ratios[0]] * len(ratios), rel=2e-3) and 1 / 0.75 < ratios[0] < 1 / 0.70
@@ -195,10 +208,9 @@ def test_dxf_texts_are_the_svg_s_at_its_places_heights_and_turns_in_their_own_sc
         assert dxf["text"] == text["text"]
         assert dxf["at"].y == pytest.approx(height - text["y"], abs=SVG_ROUNDING)
         assert dxf["rotation"] == pytest.approx(text["rotation"], abs=1e-3)
-        if not text["runs"]:
-            # A text of two scripts is set run by run from its start in the SVG; the DXF anchors it whole.
-            assert dxf["at"].x == pytest.approx(text["x"], abs=SVG_ROUNDING)
-            assert dxf["anchor"] == text["anchor"]
+        # A text set run by run (indices, two scripts) keeps its anchor on the SVG's text, as the DXF's.
+        assert dxf["at"].x == pytest.approx(text["x"], abs=SVG_ROUNDING)
+        assert dxf["anchor"] == text["anchor"]
 
 
 @pytest.mark.parametrize(("files", "form", "upright"), SHEETS)

@@ -9,8 +9,16 @@ each primitive becomes:
 * a :class:`~.primitives.Circle`: a CIRCLE, and a solid HATCH when it is filled;
 * an :class:`~.primitives.Arrow`: its shaft as an LWPOLYLINE from its start to its tip and its head as a
   solid HATCH;
-* a :class:`~.primitives.Text`: a TEXT on its baseline, aligned left, centre or right,
-  in a TrueType style that has its glyphs (DejaVu Sans, or Noto Sans CJK for Chinese).
+* a :class:`~.primitives.Text` without indices: a TEXT on its baseline, aligned left, centre or right,
+  in a TrueType style that has its glyphs (DejaVu Sans, or Noto Sans CJK for Chinese);
+* a :class:`~.primitives.Text` with indices to set (its ``runs``, R₁₂, R₁₄ with τ over it): an
+  MTEXT in the same style, height, colour and turn, attached by the bottom of its line (its
+  baseline: a stack makes a line taller, which moves its top and its middle) at the left, the
+  centre or the right, its runs on the line as written and each index a stack with nothing
+  over it (``\\S^ 12;``), each component one with nothing under it (``\\Sτ^ ;``), lettered a height
+  of the series smaller (:func:`~.lettering.index_height`) as the SVG letters them.  How far
+  under and over the line a stack stands is the CAD program's to choose (ezdxf's own renderer
+  sets an index on the line, a component over the cap height).
 
 A white fill only hides what lies under a pin or a block on white paper; a
 model space is often dark, so white fills are left out.  Stroke widths go to
@@ -34,6 +42,8 @@ from contextlib import contextmanager
 from typing import IO
 
 from .export import tool_for
+from .indices import ABOVE, LINE
+from .lettering import index_height
 from .primitives import THIN, Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide
 
 # The DXF layers and the words of a graphplan layer's name that send it there.
@@ -88,6 +98,10 @@ _BAD_NAME = re.compile(r"[<>/\\\":;?*|=`,\s]")
 _PERCENTS = re.compile(r"%{2,}")
 _CARET_OR_CONTROL = re.compile(r"[\x00-\x1f^]")
 _CHARACTER_CODE = re.compile(r"\\(?=[UuMm]\+)")
+# What an MTEXT reads as a code besides: a backslash opens a formatting code (\P a paragraph, \S a stack, \U+ a
+# character), braces a group; inside a stack a semicolon closes it and a caret, a slash or a hash splits it.
+_MTEXT_CODE = re.compile(r"[\\{}]")
+_STACK_CODE = re.compile(r"[\\{};/#]")
 
 
 def dxf_layer(name: str, item: Primitive | None = None) -> str:
@@ -240,15 +254,35 @@ class _Writer:
     def _text(self, layer: str, item: Text) -> None:
         from ezdxf.enums import TextEntityAlignment
 
-        script = "cjk" if has_wide(item.text) else "latin"
-        style = TEXT_STYLES[(script, "bold" if item.weight == "bold" else "normal")][0]
-        attributes = {"layer": layer, "style": style, **_colour_attributes(item.colour)}
+        if item.runs:
+            self._mtext(layer, item)
+            return
+        attributes = {"layer": layer, "style": _style(item), **_colour_attributes(item.colour)}
         if item.rotation:
             attributes["rotation"] = item.rotation
         align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
                  "end": TextEntityAlignment.RIGHT}[item.anchor]
         self._space.add_text(_escaped(item.text), height=item.size,
                              dxfattribs=attributes).set_placement(item.at, align=align)
+
+    def _mtext(self, layer: str, item: Text) -> None:
+        """A text with indices: an MTEXT that stacks each index under its line and each component over it, a height
+        of the series smaller, as the SVG sets them (a TEXT has no codes to move or shrink a part of it)."""
+        from ezdxf.enums import MTextEntityAlignment
+        from ezdxf.math import Vec3
+
+        attributes = {"layer": layer, "style": _style(item), "char_height": item.size,
+                      **_colour_attributes(item.colour)}
+        if item.rotation:
+            # Its baseline's direction rather than its rotation, whose unit readers disagree on (radians by the
+            # DXF reference, degrees as AutoCAD writes it).
+            attributes["text_direction"] = Vec3.from_deg_angle(item.rotation)
+        # Bottom: a line's baseline, whatever hangs under it or stands over it (a stack makes the line taller,
+        # which moves its top and its middle); left, centre or right as the TEXT is aligned on its baseline.
+        attach = {"start": MTextEntityAlignment.BOTTOM_LEFT, "middle": MTextEntityAlignment.BOTTOM_CENTER,
+                  "end": MTextEntityAlignment.BOTTOM_RIGHT}[item.anchor]
+        entity = self._space.add_mtext(_mtext_content(item), dxfattribs=attributes)
+        entity.set_location(item.at, attachment_point=attach.value)
 
     def _linetype(self, dash: tuple[float, ...]) -> str:
         name = "GP-DASH-" + "-".join(f"{d:g}" for d in dash)
@@ -261,6 +295,41 @@ class _Writer:
         return name
 
 
+def _style(item: Text) -> str:
+    """The text style of ``item``: a TrueType font that has its glyphs, bold or not."""
+    script = "cjk" if has_wide(item.text) else "latin"
+    return TEXT_STYLES[(script, "bold" if item.weight == "bold" else "normal")][0]
+
+
+def _mtext_content(item: Text) -> str:
+    """The MTEXT content of a text with indices: its runs on the line as they are written, each index a stack
+    with nothing over it (\\S^ 12;) and each component one with nothing under it (\\Sτ^ ;), in a group lettered
+    :func:`~.lettering.index_height` high, as the SVG letters them."""
+    from ezdxf.tools.text import MTextEditor
+
+    smaller = index_height(item.size) / item.size
+    content = MTextEditor()
+    for text, place in item.runs:
+        if place == LINE:
+            content.append(_mtext_escaped(text))
+            continue
+        stacked = _mtext_escaped(text, stacked=True)
+        over, under = (stacked, "") if place == ABOVE else ("", stacked)
+        content.group(str(MTextEditor().scale_height(smaller).stack(over, under)))
+    return str(content)
+
+
+def _mtext_escaped(text: str, stacked: bool = False) -> str:
+    """``text`` as an MTEXT's content (``stacked``: a part of a stack) that a CAD program reads as ``text``.
+
+    A backslash and a brace (and in a stack a semicolon, a slash and a hash) after a
+    backslash, a caret in a stack as a backslash, a caret and a space; percent signs and
+    control characters as in a TEXT (:func:`_escaped`), which an MTEXT reads alike.
+    """
+    text = (_STACK_CODE if stacked else _MTEXT_CODE).sub(lambda code: "\\" + code.group(), text)
+    return _percents_and_carets(text, "\\^ " if stacked else "^ ")
+
+
 def _escaped(text: str) -> str:
     """``text`` as a TEXT's content that a CAD program reads as ``text`` (a title ``50%%d`` read as 50°).
 
@@ -270,9 +339,14 @@ def _escaped(text: str) -> str:
     a caret and its letter (a tab ^I); a backslash before U+ or M+ as its own
     code, \\U+005C.
     """
+    return _CHARACTER_CODE.sub(r"\\U+005C", _percents_and_carets(text, "^ "))
+
+
+def _percents_and_carets(text: str, caret: str) -> str:
+    """Percent signs as %%% where two or more stand together, a caret as ``caret``, a control character as a
+    caret and its letter."""
     text = _PERCENTS.sub(lambda run: "%%%" * len(run.group()), text)
-    text = _CARET_OR_CONTROL.sub(lambda c: "^ " if c.group() == "^" else "^" + chr(ord(c.group()) + 64), text)
-    return _CHARACTER_CODE.sub(r"\\U+005C", text)
+    return _CARET_OR_CONTROL.sub(lambda c: caret if c.group() == "^" else "^" + chr(ord(c.group()) + 64), text)
 
 
 def _filled(fill: str | None) -> bool:
