@@ -200,6 +200,22 @@ def test_the_baseline_and_the_ends_of_a_label_are_a_text_s(anchor, rotation):
     assert last.extmax.x - first.extmin.x < whole.size.x - 1.0
 
 
+def test_an_indexed_label_stays_on_its_one_line():
+    """Each MTEXT of a real drawing is rendered on one line: of no column width, ezdxf's renderer wrapped one at a
+    width it estimated, a bold heading's "(φ)" left alone on its baseline and "Displacement diagram sE" a line's
+    pitch (5/3 of the height) over it."""
+    _, dxf = files("diagrams")
+    document = ezdxf.read(io.StringIO(dxf))
+    mtexts = list(document.modelspace().query("MTEXT"))
+    assert any(entity.dxf.style.endswith("BOLD") for entity in mtexts), "a heading with an index"
+    for entity in mtexts:
+        boxes = _ink(document, entity)
+        baseline, height = entity.dxf.insert.y, entity.dxf.char_height
+        assert min(box.extmin.y for box in boxes) > baseline - 0.5 * height, entity.text
+        # a component's stack stands over the cap height, under 2 heights
+        assert max(box.extmax.y for box in boxes) < baseline + 2.2 * height, entity.text
+
+
 def test_mtext_s_own_codes_in_a_label_are_read_as_the_characters_written():
     """A backslash, braces, percent signs and a caret on the line, and in an index a stack's own codes (a semicolon
     ends it, a caret, a slash or a hash splits it) read back as written, not as codes."""

@@ -12,13 +12,14 @@ each primitive becomes:
 * a :class:`~.primitives.Text` without indices: a TEXT on its baseline, aligned left, centre or right,
   in a TrueType style that has its glyphs (DejaVu Sans, or Noto Sans CJK for Chinese);
 * a :class:`~.primitives.Text` with indices to set (its ``runs``, R₁₂, R₁₄ with τ over it): an
-  MTEXT in the same style, height, colour and turn, attached by the bottom of its line (its
-  baseline: a stack makes a line taller, which moves its top and its middle) at the left, the
-  centre or the right, its runs on the line as written and each index a stack with nothing
-  over it (``\\S^ 12;``), each component one with nothing under it (``\\Sτ^ ;``), lettered a height
-  of the series smaller (:func:`~.lettering.index_height`) as the SVG letters them.  How far
-  under and over the line a stack stands is the CAD program's to choose (ezdxf's own renderer
-  sets an index on the line, a component over the cap height).
+  MTEXT in the same style, height, colour and turn, its runs on the line as written, each index
+  a stack with nothing over it (``\\S^ 12;``) and each component one with nothing under it
+  (``\\Sτ^ ;``), lettered a height of the series smaller (:func:`~.lettering.index_height`) as
+  the SVG letters them; attached by the bottom of its line, its baseline (a stack makes a line
+  taller, which moves its top and its middle), at the left, the centre or the right, in a
+  column as wide as its flat text (of no width, a reader that estimates one wrapped it).
+  How far under and over the line a stack stands is the CAD program's to choose (ezdxf's own
+  renderer sets an index on the line, a component over the cap height).
 
 A white fill only hides what lies under a pin or a block on white paper; a
 model space is often dark, so white fills are left out.  Stroke widths go to
@@ -44,7 +45,7 @@ from typing import IO
 from .export import tool_for
 from .indices import ABOVE, LINE
 from .lettering import index_height
-from .primitives import THIN, Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide
+from .primitives import THIN, Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide, text_width
 
 # The DXF layers and the words of a graphplan layer's name that send it there.
 LINKS, CONSTRUCTION, VECTORS, TEXT, CURVES, AXES, SHEET = (
@@ -271,8 +272,11 @@ class _Writer:
         from ezdxf.enums import MTextEntityAlignment
         from ezdxf.math import Vec3
 
+        # The column is the box the layouts keep for the label, as wide as its flat text (its smaller indices only
+        # narrow it): of no width, an MTEXT is wrapped by a reader that estimates one (ezdxf's renderer set the "(φ)"
+        # of "Displacement diagram sE(φ)" on a line of its own).
         attributes = {"layer": layer, "style": _style(item), "char_height": item.size,
-                      **_colour_attributes(item.colour)}
+                      "width": text_width(item.text, item.size, item.weight), **_colour_attributes(item.colour)}
         if item.rotation:
             # Its baseline's direction rather than its rotation, whose unit readers disagree on (radians by the
             # DXF reference, degrees as AutoCAD writes it).
