@@ -102,6 +102,9 @@ class MachineDynamics:
         driver's ``angle_deg`` reads (the crank's own angle), and the run counts φ from the first position, where
         the equivalent model starts, in the crank's sense of rotation.  Without it the run starts there."""
         asked = self.spec.motion
+        if self.first_position is None:
+            # A machine known by its load diagrams has its own inertia at dynamics.inertia, a linkage its links'.
+            asked = dataclasses.replace(asked, inertia_key="inertia")
         model = self.model
         if not asked.start_angle_given:
             return asked

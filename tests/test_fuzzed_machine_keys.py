@@ -6,6 +6,7 @@ the answer a student should get instead."""
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -258,3 +259,39 @@ def test_a_mass_or_stiffness_the_note_writes_as_nought_is_refused_at_its_key(tmp
     assert "1e-10" in told, told
     assert not out.exists()
     assert _refused(capsys, main(["check", str(scene)])) == told
+
+
+@pytest.mark.parametrize("inertia", [1e-14, 1e-10])
+def test_a_machine_next_to_weightless_behind_its_clutch_is_refused_at_its_inertia(tmp_path, capsys, inertia) -> None:
+    """A machine of 1e-14 kg·m² behind a 60 N·m clutch engaged at 0.5 s, driven by a linear motor, ended the run in
+    scipy's "`ts` must be strictly increasing", named at no key: the clutch's torque runs so light a side up to speed
+    in some 1e-15 s, within the rounding of the run's clock.  No machine comes to speed within a ten-thousandth of a
+    turn behind its clutch: refused at dynamics.inertia with the least inertia that takes that long, J = 1e-4·P·Tc/ω,
+    by run and check alike, and nothing is written."""
+    torque = 60.0
+    scene = _scene(tmp_path, MACHINE.replace("inertia = 2.0", f"inertia = {inertia!r}").replace(
+        'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }',
+        'motor = { kind = "linear", stall_torque = 150.0, no_load_rpm = 120, rotor_inertia = 1.0 }')
+        + f"clutch = {{ torque = {torque}, engage_at = 0.5 }}\n")
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith("graphplan: error: dynamics.inertia: "), told
+    omega = float(told.split("up to the running speed, ")[1].split(" rad/s")[0])
+    least = float(told.split("at least ")[1].split(" kg·m²")[0])
+    assert least == pytest.approx(1e-4 * (2 * math.pi / omega) * torque / omega, rel=1e-2)
+    assert inertia < least
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+
+
+def test_a_machine_as_light_as_the_bound_behind_its_clutch_runs(tmp_path, capsys) -> None:
+    """At a few times the least inertia the refusal asks for, the same machine runs, and its clutch locks after it
+    engages."""
+    scene = _scene(tmp_path, MACHINE.replace("inertia = 2.0", "inertia = 0.005").replace(
+        'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }',
+        'motor = { kind = "linear", stall_torque = 150.0, no_load_rpm = 120, rotor_inertia = 1.0 }')
+        + "clutch = { torque = 60.0, engage_at = 0.5 }\n")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["clutch_locked_at"] > 0.5

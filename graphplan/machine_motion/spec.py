@@ -34,6 +34,12 @@ MOST_TURNS = 100_000
 # damping far stiffer stops the shaft within a sliver of a turn and then lets it creep at (Md − Mr)/c: a rigid stop
 # the run cannot integrate turn by turn (a hundred-thousandth of the period took a minute and then gave up).
 SHORTEST_BRAKE_TIME_CONSTANT = 0.01
+# The shortest time a clutch's torque may take to run the machine's side, its inertia at its least, from rest up to
+# the running speed, J·ω/Tc, as a share of a turn's period.  A friction clutch brings a machine to speed over some
+# tenths of a second, a good part of a turn or many; a side that comes to speed within a ten-thousandth of a turn has
+# next to no inertia beside its clutch (1e-14 kg·m² typed for the machine's), and its slip ends within the rounding
+# of the run's clock, where the integrator could take no step (scipy's "`ts` must be strictly increasing").
+SHORTEST_CLUTCH_SPIN_UP = 1e-4
 # The overload capacity λ = Mmax/MN a Kloss motor may have: catalogues give 1.6 to 3.5 (crane motors some 4), so one
 # of 10 or more is no induction motor, most likely the percentage (220 for λ = 2.2) typed for the ratio.
 LARGEST_OVERLOAD = 10.0
@@ -95,6 +101,9 @@ class MotionSpec:
     # The two of a Kloss motor's synchronous_rpm, rated_rpm and rated_slip the scene gave, for the warning of a
     # synchronous speed no motor has to name what was typed and to keep the other as typed.
     kloss_keys: tuple[str, ...] = ()
+    # The key the machine's own inertia is given at (a machine known by its load diagrams: "inertia"), or None where
+    # the links' masses give it, for a clutch that runs the machine up in no time to name.
+    inertia_key: str | None = None
 
     def _key(self, name: str) -> str:
         """The key path of ``name`` (``"brake.damping"``) as the scene wrote it."""
@@ -134,6 +143,7 @@ class MotionSpec:
         integrates, or a brake's damping too stiff to integrate."""
         omega_run = running_speed(machine, self.motor, self.start, self.duration)
         self._refuse_stiff_brake(machine, TWO_PI / omega_run)
+        self._refuse_weightless_clutched_side(machine, omega_run)
         if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
             raise SceneError(self._key("duration"), f"{self.duration:g} s is some "
                              f"{self.duration * omega_run / TWO_PI:.3g} turns at the running speed, {omega_run:.4g} "
@@ -180,6 +190,31 @@ class MotionSpec:
                                  f"running speed that a run with no duration ends by, so the {thing} never {never}: "
                                  f"give a {self._key('duration')} past it, or an earlier {key.partition('.')[2]}",
                                  at, hint=_exponent_slip(at, 0.0, longest))
+
+    def _refuse_weightless_clutched_side(self, machine: Machine, omega_run: float) -> None:
+        """Raise :class:`SceneError` for a machine behind a clutch whose torque runs it up to ``omega_run`` in less
+        than :data:`SHORTEST_CLUTCH_SPIN_UP` of a turn's period: at the machine's own inertia where the scene gives
+        it, else at the clutch's torque (a linkage's inertia is its links')."""
+        clutch = self.clutch
+        if clutch is None:
+            return
+        period = TWO_PI / omega_run
+        inertia = min(machine.je(phi) for phi in np.linspace(0.0, TWO_PI, 64, endpoint=False))
+        spin_up = inertia * omega_run / clutch.torque
+        if spin_up >= SHORTEST_CLUTCH_SPIN_UP * period:
+            return
+        shortest = SHORTEST_CLUTCH_SPIN_UP * period
+        told = (f"the clutch's {clutch.torque:g} N·m runs the machine's side, {inertia:.3g} kg·m² at its least, up to "
+                f"the running speed, {omega_run:.4g} rad/s, in J·ω/Tc = {spin_up:.3g} s, {spin_up / period:.3g} of a "
+                f"turn's period, {period:.4g} s: no machine is so light beside its clutch (a friction clutch brings one to "
+                "speed over some tenths of a second), and a slip far shorter the run cannot follow")
+        if self.inertia_key is not None:
+            raise SceneError(self._key(self.inertia_key), f"{told}; give the machine's inertia, at least "
+                             f"{shortest * clutch.torque / omega_run:.3g} kg·m² ({SHORTEST_CLUTCH_SPIN_UP:g} of the "
+                             f"period to run it up), or a weaker {self._key('clutch')}")
+        raise SceneError(self._key("clutch.torque"), f"{told}; give a clutch of at most "
+                         f"{inertia * omega_run / shortest:.3g} N·m ({SHORTEST_CLUTCH_SPIN_UP:g} of the period to run "
+                         "the machine up), or the links' masses and inertias", clutch.torque)
 
     def _refuse_stiff_brake(self, machine: Machine, period: float) -> None:
         """Raise :class:`SceneError` at ``brake.damping`` for a brake's damping whose time constant J/c, J the least
