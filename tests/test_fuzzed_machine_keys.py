@@ -295,3 +295,29 @@ def test_a_machine_as_light_as_the_bound_behind_its_clutch_runs(tmp_path, capsys
     assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
     motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
     assert motion["clutch_locked_at"] > 0.5
+
+
+def test_a_constant_torque_that_runs_the_machine_past_any_shaft_speed_is_refused_at_the_torque(tmp_path,
+                                                                                               capsys) -> None:
+    """A constant motor of 1e7 N·m against 50 N·m was refused at dynamics.duration ("2 s is some 2.12e+06 turns"),
+    a duration of two seconds, as though the run were too long: it is the torque that runs the 3 kg·m² machine (its
+    2 and the rotor's 1) up at (1e7 − 50)/3 rad/s², past the 100 000 rpm no machine's shaft turns faster than in
+    J·ω/(Md − Mr), some 3 ms.  Refused at the torque, saying when, by run and check alike, and nothing is written."""
+    torque, resisting, inertia = 1e7, 50.0, 3.0
+    scene = _scene(tmp_path, MACHINE.replace("torque = 150.0", f"torque = {torque!r}") + "duration = 2.0\n")
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith("graphplan: error: dynamics.motor.torque: "), told
+    assert "past 100000 rpm" in told and "within dynamics.duration = 2 s" in told, told
+    seconds = float(told.split("the fastest a machine's shaft turns, ")[1].split(" s into the run")[0])
+    assert seconds == pytest.approx(inertia * 100_000 * 2 * math.pi / 60 / (torque - resisting), rel=1e-2)
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+
+
+def test_a_duration_too_long_for_a_usual_torque_is_still_refused_at_the_duration(tmp_path, capsys) -> None:
+    """The same machine at its 150 N·m takes some 260 000 turns to pass 100 000 rpm, more than a run integrates:
+    over a duration of 1e5 s it is the duration that asks too many turns, and it is refused there as before."""
+    scene = _scene(tmp_path, MACHINE + "duration = 1e5\n")
+    told = _refused(capsys, main(["check", str(scene)]))
+    assert told.startswith("graphplan: error: dynamics.duration: "), told

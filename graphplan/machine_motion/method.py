@@ -94,6 +94,21 @@ def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float]
     return motor.shaft_torque(fastest), motor.shaft_torque(fastest) - surplus(fastest)
 
 
+def runaway_time_to(machine: Machine, motor: Motor, start: Start, speed: float) -> tuple[float, float] | None:
+    """(the time, s, and the turns) a motor that outpulls the mean resistance at every speed
+    (:func:`speeds_up_without_end`) takes to run the machine from ``start`` up to ``speed``, at the mean surplus at
+    the start's speed, as :func:`running_speed` reaches the run's end with it; None where it does not outpull, or the
+    start is already as fast."""
+    if speeds_up_without_end(machine, motor) is None:
+        return None
+    given = max(start.omega, start.driving_omega or 0.0)
+    surplus = _mean_surplus(machine, motor)(given)
+    if not (surplus > 0 and speed > given):
+        return None
+    inertia = _over_a_turn(machine.je) + motor.reduced_inertia
+    return inertia * (speed - given) / surplus, inertia * (speed ** 2 - given ** 2) / (2.0 * surplus) / TWO_PI
+
+
 def stalls_in_its_first_turn(machine: Machine, motor: Motor, start: Start = REST) -> bool:
     """Whether a machine whose resistance depends on the angle alone, driven through a rigid drive by a motor of
     constant torque, comes to rest within its first turn from ``start``.

@@ -15,7 +15,14 @@ from ..flywheel import FASTEST_MEAN_RPM, misplaced_keys
 from ..reader import Table, check_number
 from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
-from .method import EndlessRun, refuse_endless_run_down, refuse_runaway, running_speed
+from .method import (
+    EndlessRun,
+    refuse_endless_run_down,
+    refuse_runaway,
+    runaway_time_to,
+    running_speed,
+    speeds_up_without_end,
+)
 from .shaft import TWO_PI, Machine
 from .simulation import (
     DEFAULT_RTOL,
@@ -144,6 +151,7 @@ class MotionSpec:
         omega_run = running_speed(machine, self.motor, self.start, self.duration)
         self._refuse_stiff_brake(machine, TWO_PI / omega_run)
         self._refuse_weightless_clutched_side(machine, omega_run)
+        self._refuse_runaway_past_any_shaft(machine, omega_run)
         if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
             raise SceneError(self._key("duration"), f"{self.duration:g} s is some "
                              f"{self.duration * omega_run / TWO_PI:.3g} turns at the running speed, {omega_run:.4g} "
@@ -177,6 +185,29 @@ class MotionSpec:
                              f"speed, {omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} "
                              f"turns, and it integrates at most {MOST_TURNS}{typed}")
 
+    def _refuse_runaway_past_any_shaft(self, machine: Machine, omega_run: float) -> None:
+        """Raise :class:`SceneError` at a constant motor's ``torque`` that outpulls the resistance at every speed by
+        so much that the machine passes :data:`~graphplan.flywheel.FASTEST_MEAN_RPM`, the fastest a machine's shaft
+        turns, within the run's duration (``omega_run`` the speed it reaches by then) and within the turns a run
+        integrates: that speed is the torque's doing, where the duration was told it asked for too many turns.  A
+        machine that would take more turns than that to get there is left to the duration's refusal."""
+        fastest = FASTEST_MEAN_RPM * RPM
+        if self.duration is None or not omega_run > fastest or not isinstance(self.motor, ConstantTorque):
+            return
+        reached = runaway_time_to(machine, self.motor, self.start, fastest)
+        if reached is None or reached[1] > MOST_TURNS:
+            return
+        motor = self.motor
+        from ..render.numerals import number
+
+        # Written as the warning of a runaway that stays within a machine's speeds writes them.
+        shaft, resistance = speeds_up_without_end(machine, motor)
+        raise SceneError(self._key("motor.torque"), f"its torque on the shaft, {number(shaft)} N·m, outpulls the mean "
+                         f"resistance, {number(resistance)} N·m, at every speed, so far that it runs the machine past "
+                         f"{FASTEST_MEAN_RPM:g} rpm, the fastest a machine's shaft turns, {reached[0]:.3g} s into the "
+                         f"run, within {self._key('duration')} = {self.duration:g} s, and would take it to some "
+                         f"{omega_run / RPM:.3g} rpm by its end: give a torque near the resistance's, or a motor whose "
+                         "torque falls with speed (kind = \"linear\" or \"kloss\")", motor.torque)
 
     def _refuse_after_the_longest_run(self, longest: float) -> None:
         """Raise :class:`SceneError` at a clutch's ``engage_at`` or a brake's ``at`` past ``longest`` s, the time a
