@@ -321,3 +321,35 @@ def test_a_duration_too_long_for_a_usual_torque_is_still_refused_at_the_duration
     scene = _scene(tmp_path, MACHINE + "duration = 1e5\n")
     told = _refused(capsys, main(["check", str(scene)]))
     assert told.startswith("graphplan: error: dynamics.duration: "), told
+
+
+@pytest.mark.parametrize("engaged", [0.0, 0.5])
+def test_a_clutch_too_weak_to_move_the_machine_with_no_duration_is_a_stall_not_a_runaway(tmp_path, capsys,
+                                                                                         engaged) -> None:
+    """With no duration, a 20 N·m clutch between a constant 150 N·m motor and 50 N·m of resistance was refused at
+    dynamics.motor as a runaway ("the machine speeds up without end"), though the machine never moves: the clutch
+    passes no more than its torque, short of the resistance, however fast the motor spins the driving half.  The run
+    ends as the same clutch given a duration does: a stall where it engaged, the clutch's torque named against
+    Mr."""
+    torque, resisting = 20.0, 50.0
+    scene = _scene(tmp_path, MACHINE + f"clutch = {{ torque = {torque}, engage_at = {engaged} }}\n")
+    assert main(["check", str(scene)]) == 0
+    capsys.readouterr()
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+    said = capsys.readouterr()
+    told = said.out + said.err
+    assert "without end" not in told, told
+    assert (f"the machine does not start: at rest at φ = 0° the clutch, slipping at its {torque:g} N·m, does not "
+            f"overcome the resistance there, {resisting:g} N·m") in told, told
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["stalled_at"] == pytest.approx(engaged)
+    assert motion["clutch_locked_at"] is None
+
+
+def test_a_clutch_stronger_than_the_resistance_behind_a_runaway_motor_is_still_refused(tmp_path, capsys) -> None:
+    """A 60 N·m clutch passes more than the 50 N·m of resistance: locked, the 150 N·m motor runs the machine away,
+    and with no duration that is refused at the motor as before."""
+    scene = _scene(tmp_path, MACHINE + "clutch = { torque = 60.0 }\n")
+    told = _refused(capsys, main(["check", str(scene)]))
+    assert told.startswith("graphplan: error: dynamics.motor: ") and "speeds up without end" in told, told

@@ -137,6 +137,11 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
     if outpulled is not None and clutch is None and machine.resists_by_angle_alone \
             and stalls_in_its_first_turn(machine, motor, start):
         return
+    if outpulled is not None and clutch is not None and clutch.torque <= outpulled[1]:
+        # The machine's side is driven by what the clutch passes, no more than its torque: short of the mean
+        # resistance, the machine loses speed turn by turn however fast the motor spins the driving half, and comes
+        # to rest where Mr outpulls the clutch (from rest, at once) and is held there: the run ends at that stall.
+        return
     if outpulled is not None:
         from ..render.numerals import number
 
