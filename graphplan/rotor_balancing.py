@@ -58,6 +58,7 @@ from .rotor_lengths import (
     heaviest_rotor,
     rotor_length,
 )
+from .rounding import ROUNDING_NOISE
 from .table_keys import keys_of_other_tables
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
@@ -461,6 +462,7 @@ def read_balancing(table: Table) -> BalancingSpec:
         plane = entry.number("plane", None)
         name = entry.string("name", None)
         entry.done()
+        _refuse_written_as_nought(entry, mass, radius)
         if plane is None and len(planes) == 2:
             raise SceneError(entry.where("plane"), "is required when [balancing] has two correction planes "
                                                    "(the mass's axial position, m)")
@@ -487,6 +489,24 @@ def read_balancing(table: Table) -> BalancingSpec:
     spec = BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
     _check_computable(balance(spec), table.where("planes"))
     return spec
+
+
+def _refuse_written_as_nought(entry: Table, mass: float, radius: float) -> None:
+    """Refuse a mass, a radius off the axis or their product m·r of no more than the rounding noise: the note writes
+    each as 0 (a mass of 1e-14 kg its m = 0 and m·r = 0 beside the others' products, as though it were not there), as
+    no rotor's part is so light or so near its axis.  A radius of 0, a mass on the axis, is as typed."""
+    if mass <= ROUNDING_NOISE:
+        raise SceneError(entry.where("mass"), f"must be above {ROUNDING_NOISE:g} kg, the size the note writes as 0: "
+                         "no rotating mass is so light (the mass is in kg; leave out a mass that is not there)", mass,
+                         hint="; a slip of the exponent?")
+    if 0 < radius <= ROUNDING_NOISE:
+        raise SceneError(entry.where("radius"), f"must be above {ROUNDING_NOISE:g} m, the size the note writes as 0, "
+                         "or 0 for a mass on the axis (the radius is in m)", radius, hint="; a slip of the exponent?")
+    if 0 < mass * radius <= ROUNDING_NOISE:
+        raise SceneError(entry.path, f"its m·r = {mass:g}·{radius:g} = {mass * radius:.3g} kg·m, not above "
+                         f"{ROUNDING_NOISE:g}, the size the note writes as 0: no rotating mass unbalances a rotor so "
+                         "little (m in kg, r in m); give its mass and radius, or radius = 0 for a mass on the axis",
+                         hint="; a slip of the exponent?")
 
 
 def _refuse_label_clash(table: Table, given: list[str], plane_names: tuple[str, ...], count: int) -> None:

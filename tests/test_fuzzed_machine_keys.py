@@ -353,3 +353,31 @@ def test_a_clutch_stronger_than_the_resistance_behind_a_runaway_motor_is_still_r
     scene = _scene(tmp_path, MACHINE + "clutch = { torque = 60.0 }\n")
     told = _refused(capsys, main(["check", str(scene)]))
     assert told.startswith("graphplan: error: dynamics.motor: ") and "speeds up without end" in told, told
+
+
+@pytest.mark.parametrize(("given", "key"), [
+    ("mass = 1e-14, radius = 0.05", "balancing.masses[0].mass"),
+    ("mass = 18.0, radius = 1e-14", "balancing.masses[0].radius"),
+    ("mass = 1e-6, radius = 1e-5", "balancing.masses[0]"),
+], ids=["mass", "radius", "product"])
+def test_a_rotating_mass_the_note_writes_as_nought_is_refused_at_its_key(tmp_path, capsys, given, key) -> None:
+    """A mass of 1e-14 kg on the rotor starter ran, and the note's tables wrote its m = 0 and m·r = 0 beside the
+    others, as though it were not there: the note writes a number below 1e-10 as 0, as a vibration's mass is refused
+    for.  A mass, a radius off the axis or their product m·r so small is refused at its key by run and check alike,
+    and nothing is written; a radius of 0, a mass on the axis, still runs."""
+    from graphplan.render.numerals import number
+
+    text = _starter(tmp_path, "rotor")
+    typed = "mass = 18.0, radius = 0.05"
+    assert text.count(typed) == 1
+    mass, radius = (float(part.split("= ")[1]) for part in given.split(", "))
+    assert "0" in {number(mass), number(radius), number(mass * radius)}
+    scene = _scene(tmp_path, text.replace(typed, given))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith(f"graphplan: error: {key}: "), told
+    assert "1e-10" in told and "writes as 0" in told, told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+    assert main(["check", str(_scene(tmp_path, text.replace(typed, "mass = 18.0, radius = 0.0")))]) == 0
