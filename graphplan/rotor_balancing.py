@@ -67,6 +67,14 @@ NEGLIGIBLE = 1e-12
 #: too close for the masses' spread, and the corrections a large couple on a short arm (a mass d beyond planes s apart
 #: carries shares of some d/s into them, so 10 is a mass some 4.5 spacings out).
 LARGE_CORRECTIONS = 10.0
+#: Each polygon is drawn at the standard scale that makes it at most this wide or tall (mm), by render/balancing.py.
+POLYGON_FIELD_MM = 90.0
+#: The most characters a mass's or a correction plane's name may have.  The names letter the products on the polygons
+#: as their indices and after them (m1r1, (m1r1)L; a longer name flat, (m·r)left), beside sides drawn within
+#: POLYGON_FIELD_MM, at the names' 3.5 mm lettering some 3 mm a lowercase character: a share's label, ((m·r)impeller)drive end, with ten of each comes to some 70 mm, most of the field,
+#: where a plane named by 80 characters ran its labels and caption 200 mm past its polygon.  Ten take every name a
+#: rotor's plane or part is given (L, R, I–I, left, drive end, impeller; левая, правая).
+LONGEST_NAME = 10
 #: Names of the correction planes when the scene does not name them.
 DYNAMIC_PLANE_NAMES = ("L", "R")
 STATIC_PLANE_NAMES = ("b",)
@@ -467,6 +475,7 @@ def read_balancing(table: Table) -> BalancingSpec:
             raise SceneError(entry.where("plane"), "is required when [balancing] has two correction planes "
                                                    "(the mass's axial position, m)")
         if name is not None:
+            _refuse_long_name(entry.where("name"), name, "mass's", "its product m·r", "1, A, blade, impeller")
             if name in names:
                 raise SceneError(entry.where("name"), f"repeats the name of {names[name]}", name)
             if (other := twin(name, names)) is not None:
@@ -489,6 +498,14 @@ def read_balancing(table: Table) -> BalancingSpec:
     spec = BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
     _check_computable(balance(spec), table.where("planes"))
     return spec
+
+
+def _refuse_long_name(where: str, name: str, whose: str, lettered: str, usual: str) -> None:
+    """Refuse a name of more than :data:`LONGEST_NAME` characters, which the polygons letter ``lettered`` by."""
+    if len(name) > LONGEST_NAME:
+        raise SceneError(where, f"is {len(name)} characters long, and a {whose} name letters {lettered} on the "
+                         f"polygons, beside sides drawn within {POLYGON_FIELD_MM:g} mm: give one of at most "
+                         f"{LONGEST_NAME} characters ({usual})", name)
 
 
 def _refuse_written_as_nought(entry: Table, mass: float, radius: float) -> None:
@@ -601,6 +618,9 @@ def _plane_names(table: Table, count: int) -> tuple[str, ...]:
     if pairs is None:
         return ()
     names = tuple(check_str(item, where) for where, item in pairs)
+    for (where, _), name in zip(pairs, names, strict=True):
+        _refuse_long_name(where, name, "plane's", "its correction's product and the shares carried to it",
+                          "L, R, left, drive end")
     if len(set(names)) != len(names):
         raise SceneError(table.where("plane_names"), "must be different names", list(names))
     if (alike := _lookalike_in(names)) is not None:

@@ -381,3 +381,35 @@ def test_a_rotating_mass_the_note_writes_as_nought_is_refused_at_its_key(tmp_pat
     assert not out.exists()
     assert _refused(capsys, main(["check", str(scene)])) == told
     assert main(["check", str(_scene(tmp_path, text.replace(typed, "mass = 18.0, radius = 0.0")))]) == 0
+
+
+@pytest.mark.parametrize(("given", "key"), [
+    ('plane_names = ["' + "Left" * 20 + '", "R"]\ncorrection_radius = 0.05 ', "balancing.plane_names[0]"),
+    ('plane_names = ["L", "' + "r" * 11 + '"]\ncorrection_radius = 0.05 ', "balancing.plane_names[1]"),
+    ('correction_radius = 0.05 ', "balancing.masses[1].name"),
+], ids=["plane-80", "plane-11", "mass-11"])
+def test_a_name_too_long_to_letter_a_polygon_is_refused_at_its_key(tmp_path, capsys, given, key) -> None:
+    """A correction plane named by 80 characters ran, and the polygons lettered its shares (m1r1)LeftLeft… and its
+    caption some 200 mm past the 90 mm its polygon is drawn in.  A plane's or a mass's name of more than ten
+    characters is refused at its key by run and check alike, and nothing is written; words of ten, a share's label
+    holding both, still fit within the polygon's field, and run."""
+    from graphplan.render import lettering
+    from graphplan.render.balancing import POLYGON_FIELD_MM
+    from graphplan.render.primitives import text_width
+
+    text = _starter(tmp_path, "rotor")
+    typed, mass = "correction_radius = 0.05 ", "{ mass = 14.0,"
+    assert text.count(typed) == 1 and text.count(mass) == 1
+    named = text.replace(mass, '{ name = "' + "n" * (11 if key.startswith("balancing.masses") else 10) + '", mass = 14.0,')
+    scene = _scene(tmp_path, named.replace(typed, given))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith(f"graphplan: error: {key}: "), told
+    assert "at most 10 characters" in told, told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+    assert text_width("((m·r)impeller_a)drive_ends", lettering.NAME) < POLYGON_FIELD_MM
+    fitting = text.replace(mass, '{ name = "impeller_a", mass = 14.0,').replace(
+        typed, 'plane_names = ["drive_ends", "R"]\n' + typed)
+    assert main(["check", str(_scene(tmp_path, fitting))]) == 0

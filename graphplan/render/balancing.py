@@ -32,7 +32,7 @@ from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
 
 from ..locale import Count, strings
-from ..rotor_balancing import BalancingResult, CorrectionPlane, PolygonVector, static_couple
+from ..rotor_balancing import POLYGON_FIELD_MM, BalancingResult, CorrectionPlane, PolygonVector, static_couple
 from ..scales import format_scale, standard_scale
 from . import lettering
 from .force_rows import CAPTION_WIDTH_MM, caption_lines
@@ -57,8 +57,6 @@ from .primitives import to_xy as _xy
 from .svg import to_svg
 from .wrapping import fitted
 
-# Each polygon is drawn at the standard scale that makes it at most this wide or tall (mm).
-POLYGON_FIELD_MM = 90.0
 # Space between the polygons of two planes (mm).
 GAP_MM = 25.0
 # The title's baseline stands this far over the drawing's top (mm), and takes at most this many lines at its size.
