@@ -39,6 +39,7 @@ from __future__ import annotations
 import cmath
 import math
 import numbers
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -125,13 +126,22 @@ class RotatingMass:
 
 def vector_name(name: str) -> str:
     """The name of the mass-radius product of the mass (or plane) ``name``: ``m1r1``, ``mLrL``; a mass named
-    as a mass is (``m1``, ``mA``) gives its index alone, not ``mm1rm1``."""
-    index = name[1:]
-    if name[:1] == "m" and ((index.isdigit() and len(index) <= 3) or (len(index) == 1 and index.isalnum())):
+    as a mass is (``m1``, ``mA``) or as its product is (``m1r1``, the label the starter says an unnamed mass gets)
+    gives its index alone, not ``mm1rm1`` nor ``(m·r)m1r1``."""
+    index = symbol_index(name)
+    if index is not None:
         name = index
     if len(name) <= 3 and name.isalnum():
         return f"m{name}r{name}"
     return f"(m·r){name}"
+
+
+def symbol_index(name: str) -> str | None:
+    """The index of a name written as a mass's symbol (``m1``, ``mA``) or its product's (``m1r1``, ``mArA``): an index
+    as the polygons letter one, numbered up to three digits or one letter or digit; else None."""
+    product = re.fullmatch(r"m(.+)r\1", name)
+    index = product[1] if product else name[1:] if name[:1] == "m" else ""
+    return index if (index.isdigit() and len(index) <= 3) or (len(index) == 1 and index.isalnum()) else None
 
 
 def direction_deg(vector: complex) -> float:
@@ -621,6 +631,11 @@ def _plane_names(table: Table, count: int) -> tuple[str, ...]:
     for (where, _), name in zip(pairs, names, strict=True):
         _refuse_long_name(where, name, "plane's", "its correction's product and the shares carried to it",
                           "L, R, left, drive end")
+        if (index := symbol_index(name)) is not None:
+            # Taken as the index it stands for, the plane's correction would still be lettered by the name whole.
+            raise SceneError(where, f"is written as a correction's symbol, and a plane's name is the index its "
+                             f"correction is lettered by (mL, rL, θL, mLrL): {name!r} would letter its correction mass "
+                             f"m{name}; name the plane {index!r}", name)
     if len(set(names)) != len(names):
         raise SceneError(table.where("plane_names"), "must be different names", list(names))
     if (alike := _lookalike_in(names)) is not None:

@@ -413,3 +413,42 @@ def test_a_name_too_long_to_letter_a_polygon_is_refused_at_its_key(tmp_path, cap
     fitting = text.replace(mass, '{ name = "impeller_a", mass = 14.0,').replace(
         typed, 'plane_names = ["drive_ends", "R"]\n' + typed)
     assert main(["check", str(_scene(tmp_path, fitting))]) == 0
+
+
+@pytest.mark.parametrize("name", ["m1r1", "m1"])
+def test_a_mass_named_as_its_product_reads_is_lettered_as_the_unnamed_mass_is(tmp_path, capsys, name) -> None:
+    """The rotor starter says an unnamed mass is lettered m1r1; a first mass named "m1r1" was lettered "(m·r)m1r1",
+    its shares "((m·r)m1r1)L", a name the note's symbols could not read as the product it was typed as.  Named as its
+    product reads (or as the mass's symbol, m1), it is lettered as the starter's unnamed first mass is, in the note
+    and on the polygons alike."""
+    text = _starter(tmp_path, "rotor")
+    typed = "{ mass = 18.0,"
+    assert text.count(typed) == 1
+    notes, drawings = {}, {}
+    for given in ("", name):
+        out = tmp_path / f"out{given}"
+        named = text.replace(typed, f'{{ name = "{given}", mass = 18.0,') if given else text
+        assert main(["run", str(_scene(tmp_path, named)), "--out", str(out), "--only", "balancing,note"]) == 0
+        notes[given] = (out / "note.md").read_text(encoding="utf-8")
+        drawings[given] = (out / "rotor_balancing.svg").read_text(encoding="utf-8")
+    assert f"(m·r){name}" not in notes[name] and "((m·r)" not in notes[name]
+    for plane in "LR":
+        assert notes[name].count(f"(m1r1){plane}") == notes[""].count(f"(m1r1){plane}") > 0
+    assert drawings[name] == drawings[""]
+
+
+@pytest.mark.parametrize(("names", "said"), [
+    ('["mL", "R"]', "would letter its correction mass mmL; name the plane 'L'"),
+    ('["L", "m2r2"]', "would letter its correction mass mm2r2; name the plane '2'"),
+], ids=["mass-symbol", "product-of-a-mass"])
+def test_a_plane_named_as_a_symbol_is_refused_at_its_key(tmp_path, capsys, names, said) -> None:
+    """A plane named "mL" lettered its correction mass "mmL = 28.267 kg", and one named "m2r2" lettered its correction
+    "(m·r)m2r2" beside the second mass's m2r2 of another meaning.  A plane's name is the index its correction's symbols
+    are lettered by: one written as such a symbol is refused at plane_names, with the index to name it by."""
+    text = _starter(tmp_path, "rotor")
+    typed = "correction_radius = 0.05 "
+    scene = _scene(tmp_path, text.replace(typed, f"plane_names = {names}\n{typed}"))
+    capsys.readouterr()
+    told = _refused(capsys, main(["check", str(scene)]))
+    assert told.startswith("graphplan: error: balancing.plane_names"), told
+    assert said in told, told
