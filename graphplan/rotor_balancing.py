@@ -72,9 +72,10 @@ LARGE_CORRECTIONS = 10.0
 POLYGON_FIELD_MM = 90.0
 #: The most characters a mass's or a correction plane's name may have.  The names letter the products on the polygons
 #: as their indices and after them (m1r1, (m1r1)L; a longer name flat, (m·r)left), beside sides drawn within
-#: POLYGON_FIELD_MM, at the names' 3.5 mm lettering some 3 mm a lowercase character: a share's label, ((m·r)impeller)drive end, with ten of each comes to some 70 mm, most of the field,
-#: where a plane named by 80 characters ran its labels and caption 200 mm past its polygon.  Ten take every name a
-#: rotor's plane or part is given (L, R, I–I, left, drive end, impeller; левая, правая).
+#: POLYGON_FIELD_MM, at the names' 3.5 mm lettering some 3 mm a lowercase character: a share's label,
+#: ((m·r)impeller)drive end, with ten of each comes to some 70 mm, most of the field, where a plane named by 80
+#: characters ran its labels and caption 200 mm past its polygon.  Ten take every name a rotor's plane or part is given
+#: (L, R, I–I, left, drive end, impeller; левая, правая).
 LONGEST_NAME = 10
 #: Names of the correction planes when the scene does not name them.
 DYNAMIC_PLANE_NAMES = ("L", "R")
