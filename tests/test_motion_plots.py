@@ -12,7 +12,7 @@ from test_dynamics_without_linkage import PRESS
 
 from graphplan.cli import main
 from graphplan.locale import strings
-from graphplan.machine_motion import Brake, Clutch, LinearMotor, Machine, Stall, Start, simulate
+from graphplan.machine_motion import Brake, Clutch, ConstantTorque, LinearMotor, Machine, Stall, Start, simulate
 from graphplan.report.motion_plots import motion_plot
 
 pytest.importorskip("matplotlib")
@@ -309,6 +309,37 @@ def test_a_clutch_slipping_with_the_shaft_never_turned_is_told_the_machine_does_
     assert text["note_dyn_never_starts_clutch"].format(angle="0°", torque=f"{clutch:g}",
                                                        resisting=f"{resisting:g}") in note
     assert "stalls" not in note and "brake applied" not in note
+
+
+def test_a_shaft_held_at_rest_behind_its_slipping_clutch_shows_every_line_its_legend_names():
+    """A constant 150 N·m motor behind a 20 N·m clutch against a constant 50 N·m: the shaft never turns while the
+    driving half spins up.  The shaft's ω = 0 ran along the axes' frame, which hid it, and the moments named the
+    motor's torque "along the run", a line of no length at 0°: two legend entries for nothing seen."""
+    from matplotlib import pyplot
+    from matplotlib.lines import Line2D
+
+    resisting = np.full(360, 50.0)
+    angles = 2.0 * np.pi * np.arange(360) / 360
+    motion = simulate(Machine(2.0, resisting=resisting), ConstantTorque(150.0, rotor_inertia=1.0), clutch=Clutch(20.0),
+                      duration=0.5)
+    assert motion.stalled_slipping and not motion.turned and np.all(motion.omega == 0.0)
+    figure = motion_plot(motion, strings("en"), resisting=(angles, resisting))
+    try:
+        run, turn = figure.axes
+        for plot in (run, turn):
+            frame = max(spine.get_zorder() for spine in plot.spines.values())
+            for line in plot.get_lines():
+                xs, ys = (np.asarray(values, dtype=float) for values in line.get_data())
+                if line.get_label().startswith("_") or not xs.size:  # unnamed, or an event's words in the legend
+                    continue
+                # A line runs some way across its plot; a marker is a point.
+                assert line.get_marker() not in ("None", "", None) or np.ptp(xs) > 0, line.get_label()
+                on_frame = np.all(ys == plot.get_ylim()[0]) or np.all(ys == plot.get_ylim()[1])
+                assert not on_frame or (line.get_zorder() > frame and not line.get_clip_on()), line.get_label()
+        shaft = next(line for line in run.get_lines() if line.get_label() == strings("en")["motion_shaft"])
+        assert isinstance(shaft, Line2D) and np.all(shaft.get_ydata() == 0.0)
+    finally:
+        pyplot.close(figure)
 
 
 def test_a_clutch_that_would_start_the_machine_but_for_the_brake_on_from_the_start_blames_the_brake(tmp_path, capsys):

@@ -150,7 +150,10 @@ def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> No
     end = float(motion.t[-1])
     times = np.union1d(np.linspace(float(motion.t[0]), end, _RUN_SAMPLES), motion.t)
     state = motion.state_at(times)
-    plot.plot(times, state[1], color=_SHAFT, linewidth=0.9, label=text["motion_shaft"])
+    # A shaft held at rest while its clutch's driving half spins up runs along ω = 0, the axes' frame, whose line hid
+    # it (named in the legend and seen nowhere): drawn over the frame.
+    over_the_frame = {"zorder": 2.6, "clip_on": False} if not np.any(state[1]) else {}
+    plot.plot(times, state[1], color=_SHAFT, linewidth=0.9, label=text["motion_shaft"], **over_the_frame)
     if motion.driving_omega is not None:
         plot.plot(times, state[2], color=_DRIVING_HALF, linewidth=0.9, linestyle="--",
                   label=text["motion_driving_half"])
@@ -306,8 +309,12 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
                   label=text["motion_resisting_braked"].format(torque=number(brake.torque, 4, mark),
                                                                at=number(brake.at, 4, mark)))
     held = float(motion.motor_torque[-1])
-    if motion.turned or motion.stalled_slipping:
+    if motion.turned:
         plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"].format())
+    elif motion.stalled_slipping:
+        # The shaft never turned behind a slipping clutch: the motor drove the clutch's driving half alone, and the
+        # shaft took the clutch's torque, drawn below; the motor's along the run was a line of no length at 0°.
+        pass
     else:
         # A shaft that never turned holds the motor at rest, at its starting torque, wherever it stands: drawn along
         # the run it was a line of no length at 0°, named in the legend and seen nowhere; across the turn it shows
