@@ -126,7 +126,29 @@ def length_slip(motion: Motion) -> LengthSlip | None:
         key, through, apart, first = guide
         return LengthSlip(key, through, f"lies {apart:.4g} m from {first}, farther than any machine's frame reaches "
                           f"(over {LONGEST_LINK_M:g} m)", apart >= MIXED_RATIO * shortest)
+    # A slide set off its guide (a PRP's, whose sliders still meet however far off) carries its joint as far off:
+    # it swells every drawing as a frame point would, and is the key to change where those are refused.
+    offset = max(_slide_offsets(mechanism), key=lambda found: abs(found[1]), default=None)
+    if offset is not None and abs(offset[1]) > LONGEST_LINK_M:
+        key, value, joint = offset
+        return LengthSlip(key, value, f"sets the slide at {joint} {abs(value):.4g} m off its guide, farther than any "
+                          f"machine's slide is set off (over {LONGEST_LINK_M:g} m)",
+                          abs(value) >= MIXED_RATIO * shortest)
     return _farthest_point(mechanism) or _point_off_its_link(motion)
+
+
+def _slide_offsets(mechanism: Mechanism) -> list[tuple[str, float, str]]:
+    """Each non-zero offset of a slide from its guide the groups give: its key, its value, and the joint it
+    carries (a PRP's B, an RPR's block pin)."""
+    found = []
+    for group in mechanism.groups:
+        offsets = getattr(group, "offsets", None)
+        if offsets is not None:
+            found += [(f"{group.where}.offsets[{n}]", value, group.joints[0]) for n, value in enumerate(offsets)
+                      if value]
+        elif getattr(group, "offset", 0.0):
+            found.append((f"{group.where}.offset", group.offset, group.joints[0]))
+    return found
 
 
 def lengths_in_millimetres(motion: Motion) -> tuple[PositionWarning, ...]:

@@ -174,20 +174,53 @@ def test_a_mechanism_far_from_the_origin_is_told_at_the_frame_point_not_as_a_pis
 
 
 def test_a_plan_larger_than_any_paper_is_given_the_pole_that_draws_it_at_its_size(tmp_path, capsys) -> None:
-    """The tangent mechanism with its ram's guide offset typed 1e7 m draws its velocity plan 2.4e9 mm across at
-    `velocity_pole = 100`, and was told "give 1 (a 150 mm plan)": the pole that fits, under a millimetre, was
-    rounded up to 1, which draws the plan 2.4e7 mm across.  A plan's size is in proportion to its pole: the pole
-    told draws it at the 150 mm said, to the two digits it is told in."""
-    fixture = (FIXTURES / "tangent_mechanism_prp.toml").read_text(encoding="utf-8")
-    assert "offsets = [0.0, 0.0]" in fixture and "velocity_pole      = 100.0" in fixture
-    scene = tmp_path / "far_offset.toml"
-    scene.write_text(fixture.replace("offsets = [0.0, 0.0]", "offsets = [1e7, 0.0]"), encoding="utf-8")
+    """The crank and slotted lever with its lever's pivot C 0.5 mm inside the crank's circle: at position 10 (φ =
+    270°) the crank pin A passes 0.5 mm from C, the lever turns at ω2·lOA/0.5 mm and its end D 0.55 m out moves
+    over a thousand times faster than A, so its velocity plan is 1.1e5 mm across at `velocity_pole = 100`.  The
+    pole that fits, under a millimetre, was rounded up to 1, which draws the plan a thousand millimetres across.  A
+    plan's size is in proportion to its pole: the pole told draws it at the 150 mm said, to the two digits it is
+    told in."""
+    from graphplan.starters import starter
+
+    lever = starter("slotted-lever")
+    mutations = (("O = [0.0, 0.30]", "O = [0.0, 0.1195]"), ('start       = "extreme"', "start       = 0.0"),
+                 ('working     = { link = 4, sense = "ccw" }', ""), ("plans       = [4, 11]", "plans = [10]"),
+                 ("during    = { from = 0.05, to = 0.95 }", 'during = "always"'))
+    for typed, mutated in mutations:
+        assert typed in lever, typed
+        lever = lever.replace(typed, mutated)
+    assert "length  = 0.12" in lever and "velocity_pole      = 100.0" in lever
+    scene = tmp_path / "near_toggle.toml"
+    scene.write_text(lever, encoding="utf-8")
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out), "--only", "velocity"]) == 2
     told = capsys.readouterr().err
     assert not out.exists()
-    found = re.search(r"drawing\.velocity_pole: draws the velocity plan of position \d+ ([0-9.e+]+) mm across, "
+    found = re.search(r"drawing\.velocity_pole: draws the velocity plan of position 10 ([0-9.e+]+) mm across, "
                       r"more than any paper \(5000 mm\): give ([0-9.e+-]+) \(a 150 mm plan\)", told)
     assert found, told
     across, pole = float(found.group(1)), float(found.group(2))
+    assert pole < 1.0
     assert across * pole / 100.0 == pytest.approx(150.0, rel=0.06)
+
+
+def test_a_slide_set_off_its_guide_farther_than_any_machine_s_is_told_at_its_offset(tmp_path, capsys) -> None:
+    """The tangent mechanism with its ram's block set 1e7 m off the lever's slot (`offsets = [1e7, 0]`) still
+    assembles, for a PRP's sliders meet however far off, and draws the paths of the points 4.3e9 mm across: it
+    was refused at `drawing.length_scale` (checked) or `drawing.velocity_pole` (the velocity plans run), scales the
+    student never changed and that fit once the offset is a machine's.  Both are refused at the offset, named, and
+    the fixture's own offsets are not (the 0.55 m from C to the ram's guide is what sets the ram)."""
+    fixture = (FIXTURES / "tangent_mechanism_prp.toml").read_text(encoding="utf-8")
+    assert "offsets = [0.0, 0.0]" in fixture
+    scene = tmp_path / "far_offset.toml"
+    scene.write_text(fixture.replace("offsets = [0.0, 0.0]", "offsets = [1e7, 0.0]"), encoding="utf-8")
+    assert main(["check", str(FIXTURES / "tangent_mechanism_prp.toml")]) == 0
+    capsys.readouterr()
+    for command in (["check", str(scene)], ["run", str(scene), "--out", str(tmp_path / "out"), "--only", "velocity"]):
+        assert main(command) == 2
+        told = capsys.readouterr().err
+        error = told[told.index("graphplan: error: "):]
+        assert error.startswith("graphplan: error: groups[1].offsets[0]: sets the slide at B 1e+07 m off its "
+                                "guide"), told
+        assert "(got 10000000.0)" in error and "Traceback" not in told
+    assert not (tmp_path / "out").exists()
