@@ -342,6 +342,16 @@ def _guide_spread(mechanism: Mechanism) -> list[tuple[str, float]]:
     return [(f"{key} ({apart:g} m from {first})", apart) for key, _, apart, first in _frame_guides(mechanism)]
 
 
+def frame_anchors(mechanism: Mechanism) -> list[tuple[str, complex]]:
+    """Where the frame holds the mechanism: each frame point and each frame guide's point given by its
+    coordinates, with its key (``frame.points.C``, ``groups[0].guide.through``)."""
+    anchors = [(f"frame.points.{name}", point) for name, point in mechanism.scene.frame_points.items()]
+    solvers = [mechanism.driver, *mechanism.groups]
+    guides = [*mechanism.scene.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
+    return anchors + [(f"{guide.where}.through", complex(*guide.through)) for guide in guides
+                      if guide.on_frame and isinstance(guide.through, tuple)]
+
+
 def _frame_guides(mechanism: Mechanism) -> list[tuple[str, tuple[float, float], float, str]]:
     """Each frame guide's point given by its coordinates: its key, the point, how far it lies from the frame's
     first point, and that point's name."""

@@ -24,7 +24,7 @@ from numpy.polynomial import Chebyshev
 
 from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
-from .length_units import mixed_units
+from .length_units import LONGEST_LINK_M, frame_anchors, mixed_units
 from .mechanism import Mechanism
 from .memo import OwnedMemo
 from .motion import Motion, Reference, reference_at, solve
@@ -265,6 +265,8 @@ def require_moving(motion: Motion, working: Working | None = None) -> None:
         travel, rest, unit = float(np.ptp(np.angle(np.exp(1j * (angle - angle[0]))))), 1e-9, "rad"
     if travel <= rest:
         run = "the crank's turn" if mechanism.driver.cyclic else f"driver.{mechanism.driver.run_key}"
+        _refuse_frame_far_apart(motion, working.link, f"{travel:.3g} {unit} over {run}, no more than rest "
+                                f"({rest:.3g} {unit})")
         raise SceneError(working.where, f"link {working.link} does not move over {run}: its travel is "
                          f"{travel:.3g} {unit}, so it has no strokes and its kinematic diagrams nothing to draw; "
                          "name a link the mechanism moves, or check the lengths and guides that should move it",
@@ -285,6 +287,30 @@ def _refuse_far_from_the_origin(motion: Motion, named: set[str], link: int, trav
                      f"told from rest only to {rest:.3g} m, more than link {link}'s travel of {travel:.3g} m on a "
                      f"mechanism {across:.3g} m across: place the frame points near the origin",
                      [frame[name].real, frame[name].imag])
+
+
+def _refuse_frame_far_apart(motion: Motion, link: int, moves: str) -> None:
+    """Refuse a working link at rest where the frame holds the mechanism at places farther apart than any machine's
+    pivots (:data:`~graphplan.length_units.LONGEST_LINK_M`): a rocker's pivot 1e15 m from the crank's is turned
+    through some 1e-16 rad, and a slider that far from its guide's point moves within what a position there is told
+    from rest by.  Told at the place that stands farthest from the origin, which the scene moved off (its
+    neighbours stay near the origin), with how far it stands from the nearest other and what the link then does:
+    named as a link at rest, the student was sent to the links' lengths and guides, which are right."""
+    anchors = frame_anchors(motion.mechanism)
+    if len(anchors) < 2:
+        return
+    key, far = max(anchors, key=lambda anchor: abs(anchor[1]))
+    nearest_key, nearest = min(((other_key, other) for other_key, other in anchors if other_key != key),
+                               key=lambda anchor: abs(anchor[1] - far))
+    apart = abs(far - nearest)
+    if not apart > LONGEST_LINK_M:
+        return
+    nearest_name = (nearest_key.removeprefix("frame.points.") if nearest_key.startswith("frame.points.")
+                    else f"the guide's point {nearest_key}")
+    raise SceneError(key, f"stands {apart:.3g} m from {nearest_name}, farther apart than any machine's pivots (over "
+                     f"{LONGEST_LINK_M:g} m): link {link} moves {moves} at that size, so it has no strokes; place "
+                     "the frame points and guides as near one another as the mechanism's pivots stand",
+                     [far.real, far.imag])
 
 
 def in_working_stroke(motion: Motion, working: Working | None = None) -> np.ndarray:

@@ -224,3 +224,35 @@ def test_a_slide_set_off_its_guide_farther_than_any_machine_s_is_told_at_its_off
                                 "guide"), told
         assert "(got 10000000.0)" in error and "Traceback" not in told
     assert not (tmp_path / "out").exists()
+
+
+def test_a_frame_pivot_farther_off_than_any_machine_s_is_told_at_that_point_not_as_a_link_at_rest(tmp_path,
+                                                                                                  capsys) -> None:
+    """The crank and slotted lever with its lever's pivot C moved to x = 1e15 m: the 0.12 m crank then turns the
+    lever through some lOA/lOC = 1.2e-16 rad, rest, and the scotch yoke with its crank's pivot O 1e15 m from its yoke's
+    guide moves the yoke its 2·lOA = 0.15 m where a position 1e15 m out is told from rest only to 1e6 m.  Both
+    were refused as "link 4 does not move", sending the student to the lengths and guides, which are right: each
+    is told at the frame point moved off, with how far it stands from the rest of the frame.  The starter as
+    written checks."""
+    from graphplan.starters import starter
+
+    lever = starter("slotted-lever")
+    assert "C = [0.0, 0.0], O = [0.0, 0.30]" in lever and "length  = 0.12" in lever
+    (tmp_path / "lever.toml").write_text(lever, encoding="utf-8")
+    assert main(["check", str(tmp_path / "lever.toml")]) == 0
+    capsys.readouterr()
+    yoke = (FIXTURES / "scotch_yoke.toml").read_text(encoding="utf-8")
+    assert "points = { O = [0.0, 0.0] }" in yoke and "length  = 0.075" in yoke
+    cases = ((lever.replace("C = [0.0, 0.0]", "C = [1e15, 0.0]"), "frame.points.C: stands 1e+15 m from O, ", "rad"),
+             (yoke.replace("O = [0.0, 0.0]", "O = [1e15, 0.0]"),
+              "frame.points.O: stands 1e+15 m from the guide's point groups[0].guide.through, ", "m"))
+    for text, opening, unit in cases:
+        scene = tmp_path / "far.toml"
+        scene.write_text(text, encoding="utf-8")
+        assert main(["check", str(scene)]) == 2
+        told = capsys.readouterr().err
+        assert f"graphplan: error: {opening}" in told, told
+        assert "does not move" not in told and "Traceback" not in told
+        travel = float(re.search(rf"link 4 moves ([0-9.e+-]+) {unit} over the crank's turn", told).group(1))
+        # The lever's turn, some 1e-16 rad, is lost in the rounding of positions 1e15 m out: only that it is rest.
+        assert travel == pytest.approx(0.15, rel=1e-6) if unit == "m" else travel <= 1e-9
