@@ -14,6 +14,10 @@ import math
 # How the drawings write a number too large or too small to read whole: a leaf of no imports of its own.
 from .render.numerals import POWER_OF_TEN, power_of_ten
 
+# No paper is longer (mm; a roll plotter's): a μl that draws the mechanism larger is a slip, refused before
+# anything is drawn, since the hatching along a guide alone would take all the memory there is.
+LARGEST_PAPER_MM = 5000.0
+
 # Mantissas of the standard scale factors, as in drafting scales 1:1, 1:2, 1:2.5, 1:4, 1:5.
 STANDARD_MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0)
 

@@ -39,6 +39,7 @@ from .reader import (
     refuse_control_characters,
     required_purpose,
 )
+from .scales import LARGEST_PAPER_MM
 from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
 from .table_keys import keys_of_other_tables
 from .units import HEAVIEST_GRAVITY, gravity_unit
@@ -834,6 +835,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     friction = tuple(_read_friction(where, item) for where, item in top.items("friction", default=[]) or [])
     positions = _read_positions(top.table("positions", None) or Table({}, "positions"), driver)
     drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
+    _refuse_swing_below_drawing(driver, positions.count, drawing.drafting_precision, top.data["driver"].get("swing"))
     _refuse_on_frame(frame_link, links, loads_)
     measured = _read_measured(top.table("measured", None))
     include = _read_output(top.table("output", None))
@@ -878,6 +880,32 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
             lines[name] = guide
     frame.done(elsewhere=keys_of_other_tables("frame"))
     return link, points, lines
+
+
+def _refuse_swing_below_drawing(driver: Driver, count: int, precision_mm: float, typed: object) -> None:
+    """Refuse a rocking crank's swing too small for its positions to be drawn apart (`swing = [20, 20 + 1e-12]` drew
+    its 7 positions as one line): at ``driver.swing``, with the smallest swing that draws them apart."""
+    if driver.kind != "crank" or driver.cyclic:
+        return
+    first, last = driver.swing
+    # A position's crank pin is drawn its length/μl from the pivot, and the whole mechanism, the crank with it, on
+    # no paper longer than LARGEST_PAPER_MM (a μl that draws it longer is refused): so at most that far out.  Two
+    # positions a step δ apart put their pins at most LARGEST_PAPER_MM·δ apart, and a drawing tells lines apart
+    # only to its drafting precision: under that on the largest paper, no drawing tells the positions apart.
+    least_step = precision_mm / LARGEST_PAPER_MM
+    steps = count - 1
+    if abs(last - first) / steps >= least_step:
+        return
+    # Told to two digits, rounded up: rounded to the nearest it could be a swing this refuses.
+    exact = math.degrees(least_step * steps)
+    unit = 10.0 ** (math.floor(math.log10(exact)) - 1)
+    least = float(f"{math.ceil(exact / unit) * unit:.2g}")
+    raise SceneError(f"{driver.where}.swing", f"spans {math.degrees(abs(last - first)):.3g}°, too little "
+                     f"for its {count} positions (positions.count) to be drawn apart: a crank drawn as long as the "
+                     f"largest paper ({LARGEST_PAPER_MM:g} mm) puts their pins "
+                     f"{LARGEST_PAPER_MM * abs(last - first) / steps:.3g} mm apart, under the drafting "
+                     f"precision of {precision_mm:g} mm (drawing.drafting_precision); give a swing of at least "
+                     f"{least:g}°", typed)
 
 
 def _refuse_on_frame(frame_link: int, links: dict[int, LinkSpec], loads_: tuple[LoadSpec, ...]) -> None:

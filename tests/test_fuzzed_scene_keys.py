@@ -7,6 +7,7 @@ and the answer a student should get instead."""
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -256,3 +257,26 @@ def test_a_frame_pivot_farther_off_than_any_machine_s_is_told_at_that_point_not_
         travel = float(re.search(rf"link 4 moves ([0-9.e+-]+) {unit} over the crank's turn", told).group(1))
         # The lever's turn, some 1e-16 rad, is lost in the rounding of positions 1e15 m out: only that it is rest.
         assert travel == pytest.approx(0.15, rel=1e-6) if unit == "m" else travel <= 1e-9
+
+
+def test_a_swing_too_small_for_its_positions_to_be_drawn_apart_is_told_at_the_swing(tmp_path, capsys) -> None:
+    """The double rocker's hand lever swung through 1e-12° (`swing = [20, 20.000000000001]`) was taken, and its 7
+    positions drawn as one line.  Drawn on the largest paper (5000 mm) a crank pin moves at most 5000 mm·δ for a
+    step δ (rad), and lines are told apart to the drafting precision (0.5 mm): the 6 steps need a swing of at least
+    6 · 0.5/5000 rad = 0.0344°.  Refused at `driver.swing` with that value, before anything is written; the swing
+    told checks, and so does the fixture's 45°."""
+    fixture = (FIXTURES / "double_rocker_swing.toml").read_text(encoding="utf-8")
+    assert "swing   = [20.0, 65.0]" in fixture and "count = 7" in fixture and "drafting_precision" not in fixture
+    scene = tmp_path / "tiny_swing.toml"
+    scene.write_text(fixture.replace("swing   = [20.0, 65.0]", "swing = [20.0, 20.000000000001]"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    told = capsys.readouterr().err
+    assert not out.exists()
+    assert told.startswith("graphplan: error: driver.swing: "), told
+    least = float(re.search(r"give a swing of at least ([0-9.e+-]+)°", told).group(1))
+    assert least == pytest.approx(math.degrees(6 * 0.5 / 5000), rel=0.02)
+    for swing in (f"[20.0, {20.0 + least!r}]", "[20.0, 65.0]"):
+        scene.write_text(fixture.replace("swing   = [20.0, 65.0]", f"swing = {swing}"), encoding="utf-8")
+        assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+    capsys.readouterr()

@@ -17,7 +17,7 @@ from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
 from ..positions import working_speed
-from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
+from ..scales import LARGEST_PAPER_MM, fit_scale, format_scale, next_standard_scale, standard_scale
 from ..scene import Working
 from ..statics import efficiency, rounded_zero
 from ..wording import raised
@@ -31,9 +31,6 @@ from .title_block import form_of
 
 # The plan of positions is scaled to fit this field when the scene gives no μl.
 POSITIONS_FIELD_MM = 200.0
-# No paper is longer (mm; a roll plotter's): a μl that draws the mechanism larger is a slip, refused before
-# anything is drawn, since the hatching along a guide alone would take all the memory there is.
-LARGEST_PAPER_MM = 5000.0
 # A figure the scene's scale draws under this share of its usual field is told of: unreadable, but asked for.
 READABLE_SHARE = 0.1
 # Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
