@@ -1366,4 +1366,13 @@ def _read_output(table: Table | None) -> tuple[str, ...] | None:
     table.done(elsewhere=keys_of_other_tables("output"))
     if pieces is None:
         return None
-    return tuple(check_choice(item, where, OUTPUT_PIECES) for where, item in pieces)
+    # A piece listed again is refused as a position listed again under positions.plans is: most likely a slip for
+    # another piece, which the run would then leave out without a word.
+    chosen: list[str] = []
+    for where, item in pieces:
+        piece = check_choice(item, where, OUTPUT_PIECES)
+        if piece in chosen:
+            raise SceneError(where, f"{piece} is already listed at {table.where('include')}[{chosen.index(piece)}]: "
+                             "list each piece once", item)
+        chosen.append(piece)
+    return tuple(chosen)

@@ -280,3 +280,27 @@ def test_a_swing_too_small_for_its_positions_to_be_drawn_apart_is_told_at_the_sw
         scene.write_text(fixture.replace("swing   = [20.0, 65.0]", f"swing = {swing}"), encoding="utf-8")
         assert main(["check", str(scene)]) == 0, capsys.readouterr().err
     capsys.readouterr()
+
+
+@pytest.mark.parametrize(("kind", "other"), [("crank-rocker", "errors"), ("rotor", "balancing")])
+def test_a_piece_listed_twice_in_output_include_is_told_at_the_repeat(tmp_path, capsys, kind, other) -> None:
+    """`[output] include = ["note", "note"]` was taken as ["note"]: a repeat, most likely a slip for another piece
+    that the run then left out without a word, refused as a position listed twice under `positions.plans` is, at
+    the repeat with the place it was first listed; of a linkage's scene and of one without, which read `[output]`
+    alike.  Each piece listed once is taken."""
+    from graphplan.starters import starter
+
+    text = starter(kind)
+    assert "[output]" not in text
+    scene = tmp_path / "scene.toml"
+    repeats = (('["note", "note"]', "output.include[1]: note is already listed at output.include[0]"),
+               (f'["note", "{other}", "note"]', "output.include[2]: note is already listed at output.include[0]"))
+    for include, told in (('["note"]', None), *repeats):
+        scene.write_text(f"{text}\n[output]\ninclude = {include}\n", encoding="utf-8")
+        if told is None:
+            assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+            assert "run writes: note" in capsys.readouterr().out
+            continue
+        assert main(["check", str(scene)]) == 2
+        error = capsys.readouterr().err
+        assert error.startswith(f"graphplan: error: {told}"), error
