@@ -142,7 +142,7 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     except AssemblyError as error:
         if slip is None:
             raise
-        raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {slip}") from error
+        raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {slip}", error.keys) from error
     if slip is not None and mechanism.driver.kind == "crank":  # a slider's values outside its travel may be meant
         warnings.warn(f"driver: {slip}", UserWarning, stacklevel=_caller_level())
     return with_toggles_between(motion, reference or reference_at(mechanism, float(motion.driver[0])), PATH_SAMPLES)

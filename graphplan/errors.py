@@ -85,14 +85,17 @@ class AssemblyError(GraphplanError, ValueError):
 
     ``position`` says where (``φ = 212°``, or ``position 7 (φ = 212°)``),
     ``group`` names the group (``II(3,4)``), ``joint`` the joint that cannot be
-    placed, and ``reason`` the arithmetic that shows why.
+    placed, and ``reason`` the arithmetic that shows why.  ``keys``: the scene's
+    keys that set what does not close there (the group's lengths, and what places
+    its outer joints), where a scene's run told them; its reason names them too.
     """
 
-    def __init__(self, joint: str, position: str, group: str, reason: str) -> None:
+    def __init__(self, joint: str, position: str, group: str, reason: str, keys: tuple[str, ...] = ()) -> None:
         self.joint = joint
         self.position = position
         self.group = group
         self.reason = reason
+        self.keys = keys
         super().__init__(f"{joint} cannot be assembled at {position} in group {group}: {reason}")
 
 

@@ -16,7 +16,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from .errors import AssemblyError, GraphplanError, SingularPositionError
+from .errors import AssemblyError, GraphplanError, SingularPositionError, as_written
 from .groups.base import Group
 from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
@@ -40,46 +40,97 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
     except AssemblyError as error:
         if _TRYING_SWINGS.get():
             raise
-        # A length in millimetres among metres: the reach and the swing it allows would be advice about a typo.
-        if (units := mixed_units(mechanism)) is not None:
-            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {units}") from error
-        driver = mechanism.driver
-        stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
-                        Group.reach_ends)
-        if driver.kind == "slider":
-            advice = _travel_advice(mechanism, stopping)
-            if advice is None:
-                raise
-            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
-        if driver.kind != "crank":
-            raise
-        taken = None
-        if first is not None:
-            with contextlib.suppress(AssemblyError, SingularPositionError):
-                taken = reference_at(mechanism, first)
-        ranges = reach(mechanism, taken)
-        if ranges == FULL_TURN:  # it turns round in the scene's assembly: the solve lost its branch
-            raise
-        if not ranges and (copied := _frame_points_at_one_place(mechanism)) is not None:
-            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {copied}") from error
-        if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
-            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
-        if not ranges and (stopped := _stopped_nowhere(mechanism, error.group)) is not None:
-            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; the mechanism assembles "
-                                f"at no angle of link {driver.link}: {stopped}{_placed_by(mechanism, error.group)}") \
-                from error
-        # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
-        if first is not None:
-            advice = _reach_advice(driver.link, ranges, False, stopping, "the values")
+        keys = keys_setting(mechanism, error.group)
+        advised = _advised(mechanism, error, first, keys)
+        raise advised from error
+
+
+def _advised(mechanism: Mechanism, error: AssemblyError, first: float | None,
+             keys: list[tuple[str, str]]) -> AssemblyError:
+    """``error`` told with the scene's keys that set what does not close (the position it names says where) and
+    the advice where there is one: a refusal that named only the joints' letters left the student to find which of
+    the scene's keys give them."""
+    # The keys right after the arithmetic they set, before any advice: what to change, then how.
+    named = f"; the scene's keys that set it: {', '.join(told for _, told in keys)}" if keys else ""
+
+    def told(advice: str = "") -> AssemblyError:
+        return AssemblyError(error.joint, error.position, error.group,
+                             f"{error.reason}{named}{f'; {advice}' if advice else ''}", tuple(key for key, _ in keys))
+
+    # A length in millimetres among metres: the reach and the swing it allows would be advice about a typo.
+    if (units := mixed_units(mechanism)) is not None:
+        return told(units)
+    driver = mechanism.driver
+    stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
+                    Group.reach_ends)
+    if driver.kind == "slider":
+        advice = _travel_advice(mechanism, stopping)
+        return told(advice or "")
+    if driver.kind != "crank":
+        return told()
+    taken = None
+    if first is not None:
+        with contextlib.suppress(AssemblyError, SingularPositionError):
+            taken = reference_at(mechanism, first)
+    ranges = reach(mechanism, taken)
+    if ranges == FULL_TURN:  # it turns round in the scene's assembly: the solve lost its branch
+        return told()
+    if not ranges and (copied := _frame_points_at_one_place(mechanism)) is not None:
+        return told(copied)
+    if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
+        return told(turned_over)
+    if not ranges and (stopped := _stopped_nowhere(mechanism, error.group)) is not None:
+        return told(f"the mechanism assembles at no angle of link {driver.link}: {stopped}"
+                    f"{_placed_by(mechanism, error.group)}")
+    # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
+    if first is not None:
+        advice = _reach_advice(driver.link, ranges, False, stopping, "the values")
+    else:
+        rocking, changes = _rocking_changes(mechanism.scene)
+        advice = _reach_advice(driver.link, ranges, driver.cyclic, stopping,
+                               runs=functools.partial(_swing_that_runs, rocking), also=changes)
+        if driver.cyclic and ranges and (slipped := _slipped_digit(mechanism, error.group)) is not None:
+            advice += f"; or, if link {driver.link} is meant to turn round, check the lengths: {slipped}"
+    if not ranges:
+        advice += _placed_by(mechanism, error.group)
+    return told(advice)
+
+
+# The keys of a group's table that give its own lengths and offsets (a triad's lengths and sides too).
+_GROUP_LENGTH_KEYS = ("length", "lengths", "sides", "offset", "offsets")
+
+
+def keys_setting(mechanism: Mechanism, label: str) -> list[tuple[str, str]]:
+    """The scene's keys that set what the group ``label`` closes, each with how it is told (a length with its value
+    as typed): the group's own lengths and offsets and its guides, then what places each joint it joins on to (the
+    crank's length and pivot, a frame point, a named point's entry, the earlier group that places it).  Empty where
+    no group has that label (the driver's own refusal names its key itself)."""
+    group = next((group for group in mechanism.groups if group.label == label), None)
+    if group is None:
+        return []
+    found: dict[str, str] = {}
+    for key in _GROUP_LENGTH_KEYS:
+        value = getattr(group, key, None)
+        # An offset left at nought is none the scene set; a length always is.
+        if value is not None and (key not in ("offset", "offsets") or any(np.atleast_1d(value))):
+            found[f"{group.where}.{key}"] = f"{group.where}.{key} = {as_written(value)}"
+    for guide in group.guides():
+        found.setdefault(guide.where, guide.where)
+    scene, driver = mechanism.scene, mechanism.driver
+    named = {spec.name: spec.where for spec in scene.points}
+    for joint in group.known_joints():
+        if joint in scene.frame_points:
+            found.setdefault(f"frame.points.{joint}", f"frame.points.{joint}")
+        elif joint in named:
+            found.setdefault(named[joint], named[joint])
+        elif driver.kind == "crank" and joint == driver.joint:
+            found.setdefault(f"{driver.where}.length", f"{driver.where}.length = {as_written(driver.length)}")
+            found.setdefault(f"frame.points.{driver.pivot}", f"frame.points.{driver.pivot}")
         else:
-            rocking, changes = _rocking_changes(mechanism.scene)
-            advice = _reach_advice(driver.link, ranges, driver.cyclic, stopping,
-                                   runs=functools.partial(_swing_that_runs, rocking), also=changes)
-            if driver.cyclic and ranges and (slipped := _slipped_digit(mechanism, error.group)) is not None:
-                advice += f"; or, if link {driver.link} is meant to turn round, check the lengths: {slipped}"
-        if not ranges:
-            advice += _placed_by(mechanism, error.group)
-        raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
+            placing = next((other for other in mechanism.groups if joint in other.new_joints()), None)
+            where = placing.where if placing is not None else driver.where
+            found.setdefault(where, where)
+    return list(found.items())
 
 
 # A length typed a digit off, 0.05 for 0.5: each of the stopping group's lengths is tried this many times longer

@@ -304,3 +304,31 @@ def test_a_piece_listed_twice_in_output_include_is_told_at_the_repeat(tmp_path, 
         assert main(["check", str(scene)]) == 2
         error = capsys.readouterr().err
         assert error.startswith(f"graphplan: error: {told}"), error
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_position_the_lengths_do_not_close_at_names_the_keys_that_set_them(tmp_path, capsys, locale) -> None:
+    """The crank-rocker starter with its coupler shortened to 0.3 m (`lengths = [0.3, 0.325]`) cannot close where
+    A–C = |A − C| passes AB + BC = 0.625 m, and was refused with the joints' letters alone ("A–C = 0.625948 m > AB +
+    BC = 0.625 m"), no key of the scene among them.  The refusal names the keys that set A–C, AB and BC (the
+    group's lengths, the crank's length, the frame points) beside the angle where it fails, in a scene of each
+    language alike, and the reach advice still follows.  The angle told is one where the crank pin, 0.175 m from O
+    at [0, 0], stands farther than 0.625 m from C at [0, 0.55]."""
+    from graphplan.starters import starter
+
+    text = starter("crank-rocker", locale)
+    assert "lengths  = [0.55, 0.325]" in text and "length  = 0.175" in text
+    assert "O = [0.0, 0.0], C = [0.0, 0.55]" in text
+    scene = tmp_path / "short_coupler.toml"
+    scene.write_text(text.replace("lengths  = [0.55, 0.325]", "lengths  = [0.3, 0.325]"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    told = capsys.readouterr().err
+    found = re.search(r"graphplan: error: B cannot be assembled at φ = ([0-9.-]+)° in group II\(3,4\): A–C = "
+                      r"([0-9.]+) m > AB \+ BC = 0\.625 m; the scene's keys that set it: groups\[0\]\.lengths = "
+                      r"\[0\.3, 0\.325\], driver\.length = 0\.175, frame\.points\.O, frame\.points\.C; link 2 reaches "
+                      r"only from ", told)
+    assert found, told
+    angle = math.radians(float(found.group(1)))
+    apart = abs(0.175 * complex(math.cos(angle), math.sin(angle)) - 0.55j)
+    assert apart > 0.625 and apart == pytest.approx(float(found.group(2)), abs=1e-6)
+    assert "driver.swing = [" in told

@@ -1250,11 +1250,14 @@ def test_rrr_too_short_to_reach() -> None:
     assert stage == "solve" and type(error) is AssemblyError
     # The crank's reach told after it, as the Python interface tells it too: ±acos(−0.35) = ±110.4873°, inward.
     assert str(error) == ("B cannot be assembled at position 5 (φ = 120°) in group II(3,4): "
-                          "A–C = 0.6245 m > AB + BC = 0.6 m; link 2 reaches only from -110.48° to 110.48° (at each "
+                          "A–C = 0.6245 m > AB + BC = 0.6 m; the scene's keys that set it: groups[0].lengths = [0.4, "
+                          "0.2], driver.length = 0.2, frame.points.O, frame.points.C; link 2 reaches only from "
+                          "-110.48° to 110.48° (at each "
                           "end two links stand in line); since it cannot turn round, drive it as a rocker: "
                           "driver.swing = [from, to] in degrees, e.g. driver.swing = [-109, 109]")
     assert (error.joint, error.position, error.group) == ("B", "position 5 (φ = 120°)", "II(3,4)")
-    assert error.reason.startswith("A–C = 0.6245 m > AB + BC = 0.6 m; link 2 reaches only")
+    assert error.keys == ("groups[0].lengths", "driver.length", "frame.points.O", "frame.points.C")
+    assert error.reason.startswith("A–C = 0.6245 m > AB + BC = 0.6 m; the scene's keys that set it: ")
     assert isinstance(error, ValueError)
 
 
@@ -1287,8 +1290,9 @@ def test_rrr_too_short_for_an_explicit_driver_array() -> None:
         graphplan.solve(scene, driver=np.radians([0.0, 90.0, 150.0]))
     # Which of the values, by its index; the reach as for the scene's own positions.
     assert str(caught.value).startswith("B cannot be assembled at φ = 150° (driver[2]) in group II(3,4): "
-                                        "A–C = 0.680592 m > AB + BC = 0.6 m; link 2 reaches only from -110.48° to "
-                                        "110.48°")
+                                        "A–C = 0.680592 m > AB + BC = 0.6 m; the scene's keys that set it: "
+                                        "groups[0].lengths = [0.4, 0.2], driver.length = 0.2, frame.points.O, "
+                                        "frame.points.C; link 2 reaches only from -110.48° to 110.48°")
 
 
 def test_rrr_too_long_difference_at_the_first_position() -> None:
@@ -1297,7 +1301,8 @@ def test_rrr_too_long_difference_at_the_first_position() -> None:
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error).startswith("B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
-                                 "link 2 reaches only from ")
+                                 "the scene's keys that set it: groups[0].lengths = [0.5, 0.1], driver.length = 0.2, "
+                                 "frame.points.O, frame.points.C; link 2 reaches only from ")
 
 
 def test_frame_points_at_one_place_are_named_where_the_mechanism_closes_nowhere() -> None:
@@ -1308,8 +1313,10 @@ def test_frame_points_at_one_place_are_named_where_the_mechanism_closes_nowhere(
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error) == ("B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A–C = 0.2 m < |AB − BC| = "
-                          "0.4 m; frame points O and C stand at one place, [0, 0], so the links pivoted at them turn "
-                          "about one axis: give C its own place (its coordinates copied from O?), or check the lengths")
+                          "0.4 m; the scene's keys that set it: groups[0].lengths = [0.5, 0.1], driver.length = 0.2, "
+                          "frame.points.O, frame.points.C; frame points O and C stand at one place, [0, 0], so the "
+                          "links pivoted at them turn about one axis: give C its own place (its coordinates copied "
+                          "from O?), or check the lengths")
 
 
 def test_frame_points_at_one_place_that_close_run() -> None:
@@ -1340,7 +1347,8 @@ def test_rrr_too_short_with_near() -> None:
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error).startswith("B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
-                                 "link 2 reaches only from ")
+                                 "the scene's keys that set it: groups[0].lengths = [0.5, 0.1], driver.length = 0.2, "
+                                 "frame.points.O, frame.points.C; link 2 reaches only from ")
 
 
 def test_rrr_toggle_is_singular() -> None:
@@ -1362,7 +1370,8 @@ def test_rrp_too_short_to_reach_the_guide() -> None:
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error).startswith("B cannot be assembled at position 3 (φ = 60°) in group II(3,4): "
-                                 "A is 0.0866025 m from the guide > AB = 0.05 m; link 2 reaches only from ")
+                                 "A is 0.0866025 m from the guide > AB = 0.05 m; the scene's keys that set it: "
+                                 "groups[0].length = 0.05, groups[0].guide, driver.length = ")
 
 
 def _rrp_toggle_scene() -> dict[str, Any]:
@@ -1400,7 +1409,8 @@ def test_rpr_offset_wider_than_the_reach() -> None:
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error).startswith("A cannot be assembled at position 8 (φ = 210°) in group II(3,4): "
                                  "the slide runs 0.3 m from C (groups[0].offset) but A is only 0.264575 m from C, so "
-                                 "the block at A cannot reach it; link 2 reaches only from ")
+                                 "the block at A cannot reach it; the scene's keys that set it: groups[0].offset = 0.3, "
+                                 "driver.length = ")
 
 
 def test_prp_guides_in_one_line_at_the_first_position_are_singular() -> None:
