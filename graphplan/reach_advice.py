@@ -126,6 +126,9 @@ def keys_setting(mechanism: Mechanism, label: str) -> list[tuple[str, str]]:
         elif driver.kind == "crank" and joint == driver.joint:
             found.setdefault(f"{driver.where}.length", f"{driver.where}.length = {as_written(driver.length)}")
             found.setdefault(f"frame.points.{driver.pivot}", f"frame.points.{driver.pivot}")
+        elif driver.kind == "slider" and joint == driver.joint:
+            found.setdefault(f"{driver.where}.travel", f"{driver.where}.travel = {as_written(list(driver.travel))}")
+            found.setdefault(driver.guide.where, driver.guide.where)
         else:
             placing = next((other for other in mechanism.groups if joint in other.new_joints()), None)
             where = placing.where if placing is not None else driver.where

@@ -332,3 +332,17 @@ def test_a_position_the_lengths_do_not_close_at_names_the_keys_that_set_them(tmp
     apart = abs(0.175 * complex(math.cos(angle), math.sin(angle)) - 0.55j)
     assert apart > 0.625 and apart == pytest.approx(float(found.group(2)), abs=1e-6)
     assert "driver.swing = [" in told
+
+
+def test_a_slider_driver_s_position_the_lengths_do_not_close_at_names_its_travel_and_guide(tmp_path, capsys) -> None:
+    """The slider-driven fixture with its links shortened to `lengths = [0.1, 0.1]`: the rod's end A, 0.2915 m from
+    C at the travel's start, is beyond AB + BC = 0.2 m.  The refusal names the group's lengths, and what places A,
+    the driver's travel and guide, not "driver" alone."""
+    fixture = (FIXTURES / "slider_driven.toml").read_text(encoding="utf-8")
+    assert "lengths  = [0.225, 0.15]" in fixture
+    scene = tmp_path / "short_links.toml"
+    scene.write_text(fixture.replace("lengths  = [0.225, 0.15]", "lengths  = [0.1, 0.1]"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    told = capsys.readouterr().err
+    assert ("AB + BC = 0.2 m; the scene's keys that set it: groups[0].lengths = [0.1, 0.1], driver.travel = [0.0, "
+            "0.2], driver.guide, frame.points.C; ") in told, told
