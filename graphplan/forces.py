@@ -20,7 +20,7 @@ sheets and the note read what was done.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
@@ -47,6 +47,18 @@ _THROUGH = 1e-12
 # A term's moment this small beside its equation's largest is the plan's rounding (an inertia moment of a link at
 # rest in its turning), not a moment: the note leaves it out by the same share (report.forces.ROUNDING).
 TERM_ROUNDING = 1e-12
+# A force less than this share of the largest on its group cut free is a rounding error: the force sheet draws no
+# arrow for it, so no arm of it is named (:attr:`GroupForces.arm_names`), and the lever none at its point.
+NEGLIGIBLE = 1e-9
+
+
+def negligible(force: complex, forces: Sequence[complex]) -> bool:
+    """Whether a force is nought beside the others (a rounding error): it is not drawn.
+
+    A small force that is there (a link's weight beside the inertia loads)
+    is drawn, at least the force sheet's least arrow long.
+    """
+    return abs(force) <= NEGLIGIBLE * max((abs(other) for other in forces), default=0.0)
 
 
 @dataclass(frozen=True)
@@ -182,6 +194,18 @@ class Found:
 
 
 @dataclass(frozen=True)
+class BodyForce:
+    """A force on a group cut free: a ``load`` of its links (a reaction a later group handed back among them), a
+    ``reaction`` found on it from outside, whole or the part of it its polygon lays (R23τ), or, with neither, the
+    slider driver's balancing force Fb."""
+
+    name: str
+    force: complex
+    load: Load | None = None
+    reaction: Found | None = None
+
+
+@dataclass(frozen=True)
 class GroupForces:
     """One group cut free: its loads, its moment equations, its polygon, the reactions found, and μF (N/mm)
     its polygon is drawn at."""
@@ -194,6 +218,59 @@ class GroupForces:
     found: tuple[Found, ...]
     scale: float = 1.0
     projections: tuple[ProjectionEquation, ...] = ()
+
+    @property
+    def body_forces(self) -> tuple[BodyForce, ...]:
+        """Every force on the group cut free: its loads, the reactions found on it, a slider driver's Fb.
+
+        A reaction is split as the group's polygon splits it (R23τ, R23n);
+        reactions between the group's own links are inner and are no force on it.
+        """
+        forces = [BodyForce(load.name, load.force, load=load) for load in self.loads if load.is_force and load.force != 0]
+        polygon = {vector.name: vector for vector in self.polygon.vectors if vector.role != "inner"}
+        for found in self.found:
+            if found.source in self.links:
+                continue
+            parts = [polygon[name] for name in (f"{found.name}τ", f"{found.name}n") if name in polygon]
+            if parts:
+                forces.extend(BodyForce(part.name, part.force, reaction=found) for part in parts)
+            else:
+                forces.append(BodyForce(found.name, found.force, reaction=found))
+        if "Fb" in polygon:
+            forces.append(BodyForce("Fb", polygon["Fb"].force))
+        return tuple(forces)
+
+    @property
+    def shown_forces(self) -> tuple[BodyForce, ...]:
+        """The forces on the group cut free that are there: all but a rounding error's (:func:`negligible`)."""
+        forces = self.body_forces
+        return tuple(force for force in forces if not negligible(force.force, [other.force for other in forces]))
+
+    @property
+    def arm_names(self) -> tuple[tuple[str | None, ...], ...]:
+        """For each moment equation, the name of the arm of each of its standing terms (h1, h2, …, numbered on
+        through the group's equations), None for a term with no arm of its own to name.
+
+        A term has its arm named where its force is one the group cut free
+        shows (:attr:`shown_forces`), however short the arm: a couple (Mu3),
+        a term the group adds that is no force on it (R·x) and a rounding
+        error's force have none.  The force sheet letters its arms by these
+        names and the note writes each term's F·h with them, so that the note's
+        h2 is the sheet's.
+        """
+        shown = {force.name for force in self.shown_forces}
+        count = 0
+        names = []
+        for equation in self.moments:
+            row: list[str | None] = []
+            for term in equation.standing_terms:
+                if term.name in shown:
+                    count += 1
+                    row.append(f"h{count}")
+                else:
+                    row.append(None)
+            names.append(tuple(row))
+        return tuple(names)
 
     def held_as_couple_alone(self, equation: MomentEquation) -> str | None:
         """The reaction whose moment R·x its guide holds as a couple alone, or None.

@@ -29,7 +29,7 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
-from ..forces import GroupForces, MomentEquation, ProjectionEquation
+from ..forces import NEGLIGIBLE, BodyForce, GroupForces, MomentEquation, ProjectionEquation
 from ..geometry import perpendicular_foot
 from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
@@ -48,7 +48,6 @@ from .force_marks import (
     LEAST_ARROW_MM,
     LOAD,
     NAME_SIZE,
-    NEGLIGIBLE,
     PER_LINE,
     POINT_SIZE,
     VALUE_SEPARATOR,
@@ -60,7 +59,6 @@ from .force_marks import (
     group_id,
     grown_union,
     letters_placed,
-    negligible,
     points_onto,
     sign_mark,
     unstacked,
@@ -336,14 +334,13 @@ def _group_size_mm(sheet: ForceSheet, group: GroupForces) -> float:
 def _body_frame(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
                 ) -> tuple[list[Primitive], list[str], list[_Force], float]:
     """The group cut free's links (and its special points) on the paper, those points' names, the forces on it that
-    are drawn (a rounding error's is not, :func:`negligible`) and the μF their arrows are drawn at, which the links'
+    are drawn (a rounding error's is not, :attr:`GroupForces.shown_forces`) and the μF their arrows are drawn at, which the links'
     extent sets."""
     links = _links(sheet, group, paper)
     special, special_names = _special_points(sheet, group, paper)
     links += special
-    forces = _forces_on(sheet, group)
-    shown = [force for force in forces if not negligible(force.force, [other.force for other in forces])]
-    return links, special_names, shown, arrow_scale([force.force for force in forces], links)
+    shown = [_drawn(sheet, force) for force in group.shown_forces]
+    return links, special_names, shown, arrow_scale([force.force for force in group.body_forces], links)
 
 
 def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...]]]:
@@ -490,27 +487,17 @@ def _named_points(sheet: ForceSheet, group: GroupForces) -> list[str]:
     return sorted(name for name in names if name in sheet.positions)
 
 
-def _forces_on(sheet: ForceSheet, group: GroupForces) -> list[_Force]:
-    """Every force on the group cut free: its loads, the reactions found on it, a slider driver's Fb.
-
-    A reaction is split as the group's polygon splits it (R23τ, R23n);
-    reactions between the group's own links are inner and not drawn here.
-    """
-    forces = [_Force(load.name, _load_point(sheet, load.point) + load.offset, load.force, LOAD)
-              for load in group.loads if load.is_force and load.force != 0]
-    polygon = {vector.name: vector for vector in group.polygon.vectors if vector.role != "inner"}
-    for found in group.found:
-        if found.source in group.links:
-            continue
-        point = _along_slide(sheet, found.joint, found.source, found.target, found.offset)
-        parts = [polygon[name] for name in (f"{found.name}τ", f"{found.name}n") if name in polygon]
-        if parts:
-            forces.extend(_Force(part.name, point, part.force, _REACTION) for part in parts)
-        else:
-            forces.append(_Force(found.name, point, found.force, _REACTION))
-    if "Fb" in polygon:
-        forces.append(_Force("Fb", sheet.positions[sheet.mechanism.driver.joint], polygon["Fb"].force, BALANCING))
-    return forces
+def _drawn(sheet: ForceSheet, force: BodyForce) -> _Force:
+    """A force on the group cut free (:attr:`GroupForces.body_forces`) at its point, in its style: a load at its
+    point, its line moved by its offset; a reaction at its joint, or off it along its slide; Fb at the driver's
+    joint."""
+    if force.load is not None:
+        return _Force(force.name, _load_point(sheet, force.load.point) + force.load.offset, force.force, LOAD)
+    if force.reaction is not None:
+        found = force.reaction
+        return _Force(force.name, _along_slide(sheet, found.joint, found.source, found.target, found.offset),
+                      force.force, _REACTION)
+    return _Force(force.name, sheet.positions[sheet.mechanism.driver.joint], force.force, BALANCING)
 
 
 def _load_point(sheet: ForceSheet, point: str | None) -> complex:
@@ -707,6 +694,10 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
           paper) -> tuple[list[Primitive], list[Anchor], list[str]]:
     """The arm of every term of the group's moment equations, h1, h2, …, and the equations written with them.
 
+    The arms are named as the note names them (:attr:`GroupForces.arm_names`):
+    each force drawn here (``drawn``, the group's shown forces) that stands
+    in an equation.
+
     An arm is the perpendicular from the moment centre to the force's line;
     the line runs on, dashed, from the arrow to the foot when the foot lies
     off the arrow.  A force whose line passes through the centre has no arm
@@ -718,16 +709,13 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
     items: list[Primitive] = []
     anchors: list[Anchor] = []
     lines: list[str] = []
-    count = 0
-    for equation in group.moments:
+    for equation, names in zip(group.moments, group.arm_names, strict=True):
         centre = _c(paper(sheet.positions[equation.about]))
         parts: list[str] = []
         undrawn: list[str] = []
-        for term in equation.standing_terms:
-            if term.name in drawn:
+        for term, name in zip(equation.standing_terms, names, strict=True):
+            if name is not None:
                 start, end, unit = drawn[term.name]
-                count += 1
-                name = f"h{count}"
                 parts.append(f"{sign_mark(term.moment)} {load_symbol(term.name, sheet.text)}·{name}")
                 if term.arm / sheet.length_scale < ZERO_MM:
                     undrawn.append(f"{name} = {significant(term.arm / sheet.length_scale)} {sheet.text['millimetre']}")

@@ -18,7 +18,7 @@ from shapely.geometry import LineString, MultiPoint
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 
-from ..forces import TERM_ROUNDING
+from ..forces import TERM_ROUNDING, negligible
 from ..geometry import perpendicular_foot
 from ..lever import Lever, LeverTerm, shared_arms, turned
 from ..locale import load_symbol
@@ -45,7 +45,6 @@ from .force_marks import (
     label_on_a_line,
     led_from,
     letters_placed,
-    negligible,
     points_onto,
     short_run_on,
     sign_mark,

@@ -6,7 +6,7 @@ polygons (:mod:`graphplan.render.force_polygons`) and Zhukovsky's lever
 and draw with what is here: forces as arrows at a standard scale that draws
 the largest about a quarter of the drawing's size (:func:`arrow_scale`),
 never shorter than :data:`LEAST_ARROW_MM`, a rounding error's not at all
-(:func:`negligible`), two at one point on one line one beyond the other
+(:func:`graphplan.forces.negligible`), two at one point on one line one beyond the other
 (:func:`unstacked`), an arm as the perpendicular from its centre to the
 force's line (:func:`arm_with_run_on`); names placed clear of the figure
 (:func:`letters_placed`) and the tests of whether one reads as naming what it
@@ -65,8 +65,6 @@ ARROW_SHARE = 0.25
 # No force arrow on a group or on the lever is drawn shorter than this (mm), so that its head and
 # its direction read; the caption says so.
 LEAST_ARROW_MM = 10.0
-# A force less than this share of the largest beside it is a rounding error and is not drawn.
-NEGLIGIBLE = 1e-9
 # A load whose arrow would run this far (mm), and this share of its length, within a bar of the drawn links
 # either way from its point lies along its link (a long arrow leaving its link at a small angle reads well);
 # it is drawn this far beside its line instead, tied to its point by a thin leader.
@@ -283,15 +281,6 @@ def led_from(leader: Polyline, anchor: Anchor) -> bool:
     if math.dist(start, anchor.at) <= 1.0:
         return True
     return anchor.along is not None and LineString(anchor.along).distance(ShapelyPoint(start)) <= 1.0
-
-
-def negligible(force: complex, forces: Sequence[complex]) -> bool:
-    """Whether a force is nought beside the others (a rounding error): it is not drawn.
-
-    A small force that is there (a link's weight beside the inertia loads)
-    is drawn, at least :data:`LEAST_ARROW_MM` long.
-    """
-    return abs(force) <= NEGLIGIBLE * max((abs(other) for other in forces), default=0.0)
 
 
 def arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> float:
