@@ -238,7 +238,7 @@ def test_moment_equations_add_up_and_give_the_unknown(read):
         if plan != "forces" or not line.startswith("- "):
             continue
         moments = {}
-        for found in re.finditer(rf"M\((\w+)\) = (−?)\w+·h = −?({NUMBER})·({NUMBER}) = ({NUMBER}) ", line):
+        for found in re.finditer(rf"M\((\w+)\) = (−?)\w+·h\d* = −?({NUMBER})·({NUMBER}) = ({NUMBER}) ", line):
             _, sign, force, arm, printed = found.groups()
             assert close(value(force) * value(arm), printed.lstrip("−"), force, arm), line
             assert printed.startswith("−") == (sign == "−"), line

@@ -209,7 +209,7 @@ def test_a_displaced_inertia_force_is_told_with_its_shift_and_its_point_on_the_l
     assert "Fu4 acts on a line hu4 off S4, so that its moment about S4 is Mu4, and takes the place of Mu4" in section
     line_point = points["4"] + shift
     arm_about_c = abs(float(line_point[0] * force[1] - line_point[1] * force[0])) / np.linalg.norm(force)
-    product = re.search(rf"M\(Fu4\) = −?Fu4·h = {NUMBER}·{NUMBER} = ", section)
+    product = re.search(rf"M\(Fu4\) = −?Fu4·h\d* = {NUMBER}·{NUMBER} = ", section)
     assert value(product.group(2)) == pytest.approx(arm_about_c, abs=6e-5)
     image = velocity["4"] + float(velocity["ψ4"]) * np.array([-shift[1], shift[0]])
     lever_scale = value(re.search(rf"drawn larger than the velocity plan, at μV = {NUMBER} \(m/s\)/mm", section)

@@ -287,8 +287,8 @@ def _force_group(note: Writer, plan: PlanPosition, group, friction: bool = False
         note.para(note.t("note_slot_projections"), *(f"- {_projection(note, equation)}" for equation in group.projections))
     loads = {load.name: load for load in group.loads}
     lines = []
-    for equation in group.moments:
-        line = f"- {_moment_equation(note, equation, loads, group)}"
+    for equation, arms in zip(group.moments, group.arm_names, strict=True):
+        line = f"- {_moment_equation(note, equation, loads, group, arms)}"
         if reaction := group.held_as_couple_alone(equation):
             line += note.text["semicolon"] + note.t("note_couple_alone", name=reaction)
         lines.append(line)
@@ -434,8 +434,10 @@ def _polygon_sums(note: Writer, group) -> str:
     return note.text["semicolon"].join(sums)
 
 
-def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=None) -> str:
-    """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h.
+def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group,
+                     arms: tuple[str | None, ...]) -> str:
+    """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h1, its arm named as
+    the force sheet names it (``arms``, the group's :attr:`~graphplan.forces.GroupForces.arm_names` of the equation).
 
     Each number is written to as many digits as make the arithmetic as printed give the number printed after it:
     the reader who checks the note with a calculator finds its results.  So the result is written first, and the
@@ -445,12 +447,15 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
     couple = equation.unknown.startswith("M") or "·" in equation.unknown
     unknown = load_symbol(equation.unknown, text)  # the driver's balancing moment Mb, as the locale writes it
     unit = text["newton_metre"] if couple else text["newton"]
-    # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written.
-    size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
-    shown = [term for term in equation.terms if abs(term.moment) > ROUNDING * size]
+    # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written: the terms the
+    # force sheet writes, whose arms it names.
+    shown = list(equation.standing_terms)
+    # A force the sheet names the arm of but no load of the group (the reactions' τ parts a triad's equation about
+    # Assur's point adds) is written as F·h too, its size the one the sheet draws.
+    named = {force.name: force.force for force in group.shown_forces}
     moments = [term.moment for term in shown]
     # forces.md asks the same: both write a slide's equation as the shift x it finds.
-    shift = force_report.shift(group, equation) if group is not None else None
+    shift = force_report.shift(group, equation)
     head = f"ΣM{equation.about}({equation.bodies})"
     if shift is not None and shift.through:
         # A slide's normal reaction with no couple to carry: it passes through the moment centre, its joint.
@@ -469,7 +474,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
                 f"{unknown} = {couple_text} {unit}{text['comma']}x = {couple_text}/{force} = "
                 f"{x} {text['unit_m']} = {note.n(1000.0 * shift.x)} {text['millimetre']}")
         moments_written = _written_terms(terms)
-        return _one_a_line([*_moment_parts(note, shown, loads, moments_written), line])
+        return _one_a_line([*_moment_parts(note, shown, loads, moments_written, arms, named), line])
     elif couple:
         value = note.n(equation.value)
         terms = _summed(note, moments, value, lambda total: -total)
@@ -489,7 +494,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
                 f" ⇒ {unknown} = {solved} = {value} {unit}")
         if equation.value < 0:
             line += " " + note.t("note_sense_reversed", name=unknown)
-    return _one_a_line([*_moment_parts(note, shown, loads, _written_terms(terms)), line])
+    return _one_a_line([*_moment_parts(note, shown, loads, _written_terms(terms), arms, named), line])
 
 
 def _one_a_line(parts: list[str]) -> str:
@@ -519,20 +524,26 @@ def _written_terms(terms: str) -> list[str]:
     return terms.split()[1::2]
 
 
-def _moment_parts(note: Writer, shown, loads: Mapping[str, object], written: list[str]) -> list[str]:
-    """``M(G3) = −G3·h = −166.77·0.2054 = −34.254 N·m``: each term's moment, written as the equation writes it, with
-    its force and arm to as many digits as make their product read it."""
+def _moment_parts(note: Writer, shown, loads: Mapping[str, object], written: list[str],
+                  arms: tuple[str | None, ...], named: Mapping[str, complex]) -> list[str]:
+    """``M(G3) = −G3·h1 = −166.77·0.2054 = −34.254 N·m``: each term's moment, written as the equation writes it, with
+    its force and arm to as many digits as make their product read it, the arm by the name the force sheet letters
+    it (``arms``, one for each term of ``shown``)."""
     parts = []
-    for term, size in zip(shown, written, strict=True):
+    for term, size, arm_name in zip(shown, written, arms, strict=True):
         moment = f"{_sign(term.moment)}{size}"
         symbol = load_symbol(term.name, note.text)
         load = loads.get(term.name)
         force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
+        if force is None and arm_name is not None:
+            force = named[term.name]
         if force is not None and term.arm:
             digits = _digits(size)
             magnitude, arm = reproducing(note, [abs(force), term.arm], [5, 4], size, digits,
                                          lambda force, arm: abs(force * arm))
-            parts.append(f"M({symbol}) = {_sign(term.moment)}{symbol}·h = "
+            # A force the sheet draws no arrow for (a rounding error's beside the others) has no arm lettered there:
+            # its arm stays a bare h, as the sheet writes its term M(F).
+            parts.append(f"M({symbol}) = {_sign(term.moment)}{symbol}·{arm_name or 'h'} = "
                          f"{_sign(term.moment)}{note.product(magnitude, arm)} = {moment} {note.text['newton_metre']}")
         else:
             parts.append(f"M({symbol}) = {moment} {note.text['newton_metre']}")
