@@ -29,6 +29,8 @@ from .mechanism import Mechanism
 from .memo import OwnedMemo
 from .motion import Motion, Reference, reference_at, solve
 from .reader import radians_within_a_turn
+from .rounding import rounded_up
+from .scales import LARGEST_PAPER_MM
 from .scene import Working
 
 # Driver positions per cycle of the sweep that brackets the extremes.
@@ -102,6 +104,8 @@ def _found_positions(mechanism: Mechanism) -> PositionSet:
     if not driver.cyclic:  # a slider's travel, a rocking crank's swing: from one end to the other
         values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
         reference = _first_reference(mechanism, float(values[0]), int(numbers[0]), f"driver.{driver.run_key}")
+        if driver.kind == "slider":
+            _refuse_travel_below_drawing(mechanism, values, reference, numbers)
         extremes, reversals, turns = None, (), 0
     else:
         start = first_value(mechanism)
@@ -179,6 +183,39 @@ def stroke_extremes(positions: PositionSet, stroke: Working | None) -> tuple[flo
     where the positions run once over a swing or a travel, which have no extremes (a load's stroke then goes by
     its link's sense of motion alone, as the working link's does)."""
     return positions.extremes if stroke is None else positions.load_strokes.get((stroke.link, stroke.sense))
+
+
+def _refuse_travel_below_drawing(mechanism: Mechanism, values: np.ndarray, reference: Reference,
+                                 numbers: np.ndarray) -> None:
+    """Refuse a slider driver's travel too short for its positions to be drawn apart (`travel = [0, 1e-15]` was
+    refused as a working link at rest, or drew its 12 positions as one): at ``driver.travel``, with the least travel
+    that draws them apart, as a rocking crank's swing is refused at ``driver.swing``."""
+    driver, scene = mechanism.driver, mechanism.scene
+    steps = len(values) - 1
+    if steps < 1:
+        return
+    # The plan of positions draws the paths of every point, and no μl may draw them wider or taller than the
+    # largest paper (LARGEST_PAPER_MM, render/drawings.length_scale): so μl ≥ across/LARGEST_PAPER_MM, where across
+    # is at least the joints' spread in the first position, which lies on those paths.  A step moves the slider
+    # travel/steps, drawn travel/steps/μl ≤ travel/steps·LARGEST_PAPER_MM/across; a drawing tells lines apart only
+    # to its drafting precision, so under that on the largest paper no drawing tells the positions apart.  Weighed
+    # against the mechanism's own size, never refusing a stroke the paper draws: a 0.2 m cylinder's on a 0.3 m
+    # lever drive clears it some 700 times.
+    named = {spec.name for spec in scene.points}
+    first = solve(mechanism, values[:1], reference, numbers[:1], tolerant=True)
+    joints = np.concatenate([np.ravel(point.r) for name, point in first.points.items() if name not in named])
+    across = max(float(np.ptp(joints.real)), float(np.ptp(joints.imag)))
+    travel = abs(float(values[-1] - values[0]))
+    precision = scene.drawing.drafting_precision
+    if not across > 0 or travel / steps * LARGEST_PAPER_MM / across >= precision:
+        return
+    least = rounded_up(precision * across / LARGEST_PAPER_MM * steps)
+    raise SceneError(f"{driver.where}.travel", f"spans {travel:.3g} m, too little for its {len(values)} positions "
+                     f"(positions.count) to be drawn apart: the mechanism, {across:.3g} m across at position "
+                     f"{numbers[0]}, drawn as large as the largest paper ({LARGEST_PAPER_MM:g} mm) moves the slider "
+                     f"{travel / steps * LARGEST_PAPER_MM / across:.3g} mm a step, under the drafting precision of "
+                     f"{precision:g} mm (drawing.drafting_precision); give a travel of at least {least:g} m",
+                     list(driver.travel))
 
 
 def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: str) -> Reference:

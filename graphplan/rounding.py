@@ -7,6 +7,7 @@ It knows nothing of linkages, so that the equilibrium's efficiency (``statics``)
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -39,4 +40,11 @@ def noise_floor(values: Any) -> float:
     return largest_finite(values) * RELATIVE_NOISE
 
 
-__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor"]
+def rounded_up(value: float, digits: int = 2) -> float:
+    """``value`` (> 0) to ``digits`` significant digits, rounded up: the least a refusal asks for, which rounded to
+    the nearest could be a value the same refusal refuses."""
+    unit = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+    return float(f"{math.ceil(value / unit) * unit:.{digits}g}")
+
+
+__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor", "rounded_up"]

@@ -39,6 +39,7 @@ from .reader import (
     refuse_control_characters,
     required_purpose,
 )
+from .rounding import rounded_up
 from .scales import LARGEST_PAPER_MM
 from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
 from .table_keys import keys_of_other_tables
@@ -896,10 +897,7 @@ def _refuse_swing_below_drawing(driver: Driver, count: int, precision_mm: float,
     steps = count - 1
     if abs(last - first) / steps >= least_step:
         return
-    # Told to two digits, rounded up: rounded to the nearest it could be a swing this refuses.
-    exact = math.degrees(least_step * steps)
-    unit = 10.0 ** (math.floor(math.log10(exact)) - 1)
-    least = float(f"{math.ceil(exact / unit) * unit:.2g}")
+    least = rounded_up(math.degrees(least_step * steps))
     raise SceneError(f"{driver.where}.swing", f"spans {math.degrees(abs(last - first)):.3g}°, too little "
                      f"for its {count} positions (positions.count) to be drawn apart: a crank drawn as long as the "
                      f"largest paper ({LARGEST_PAPER_MM:g} mm) puts their pins "

@@ -346,3 +346,34 @@ def test_a_slider_driver_s_position_the_lengths_do_not_close_at_names_its_travel
     told = capsys.readouterr().err
     assert ("AB + BC = 0.2 m; the scene's keys that set it: groups[0].lengths = [0.1, 0.1], driver.travel = [0.0, "
             "0.2], driver.guide, frame.points.C; ") in told, told
+
+
+@pytest.mark.parametrize("working", [True, False], ids=["working-link", "no-working-link"])
+def test_a_travel_too_short_for_its_positions_to_be_drawn_apart_is_told_at_the_travel(tmp_path, capsys,
+                                                                                     working) -> None:
+    """The slider-driven fixture's rod given `travel = [0, 1e-15]` was refused at positions.working, its lever
+    "does not move", and without a working link taken, its 12 positions drawn as one.  The plan of positions is
+    drawn at most 5000 mm across (the largest paper), and the mechanism at its first position already spans the
+    0.25 m from G = [0, 0] up to C = [0.15, 0.25]: a step of the slider is drawn at most travel/11 · 5000/0.25 mm,
+    and lines are told apart to the drafting precision (0.5 mm), so the 11 steps need a travel of at least
+    11 · 0.5 · 0.25/5000 m.  Refused at `driver.travel` with that value, before anything is written; the travel
+    told checks, and so does the fixture's 0.2 m."""
+    fixture = (FIXTURES / "slider_driven.toml").read_text(encoding="utf-8")
+    typed = "travel       = [0.0, 0.20]"
+    assert typed in fixture and "G = [0.0, 0.0], C = [0.15, 0.25]" in fixture and "count       = 12" in fixture
+    if not working:
+        fixture = fixture.replace('working     = { link = 4, sense = "ccw" }', "").replace(
+            'during    = "working"', 'during    = "always"')
+    scene = tmp_path / "tiny_travel.toml"
+    scene.write_text(fixture.replace(typed, "travel = [0.0, 1e-15]"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    told = capsys.readouterr().err
+    assert not out.exists()
+    assert told.startswith("graphplan: error: driver.travel: "), told
+    least = float(re.search(r"give a travel of at least ([0-9.e+-]+) m", told).group(1))
+    assert least == pytest.approx(11 * 0.5 * 0.25 / 5000, rel=0.02)
+    for travel in (f"[0.0, {least!r}]", "[0.0, 0.20]"):
+        scene.write_text(fixture.replace(typed, f"travel = {travel}"), encoding="utf-8")
+        assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+    capsys.readouterr()
