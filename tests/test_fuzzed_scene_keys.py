@@ -377,3 +377,23 @@ def test_a_travel_too_short_for_its_positions_to_be_drawn_apart_is_told_at_the_t
         scene.write_text(fixture.replace(typed, f"travel = {travel}"), encoding="utf-8")
         assert main(["check", str(scene)]) == 0, capsys.readouterr().err
     capsys.readouterr()
+
+
+def test_an_rpr_slide_out_of_reach_names_its_offset_once(tmp_path, capsys) -> None:
+    """The quick-return fixture's slide set 0.25 m off the lever's pivot C (`offset = 0.25`): the crank pin A, 0.12 m
+    from O and O 0.30 m from C, comes as near C as 0.18 m, where the block cannot reach the slide.  The refusal named
+    groups[0].offset twice, in its arithmetic ("0.25 m from C (groups[0].offset)") and in the list of the scene's
+    keys that set it: named once, in the list with its value, by check and run alike."""
+    fixture = (FIXTURES / "quick_return_slotted_lever.toml").read_text(encoding="utf-8")
+    typed = "offset = 0.0             # the slot's centre line passes through C"
+    assert typed in fixture and "C = [0.0, 0.0], O = [0.0, 0.30]" in fixture and "length  = 0.12" in fixture
+    assert 0.30 - 0.12 < 0.25
+    scene = tmp_path / "offset_slide.toml"
+    scene.write_text(fixture.replace(typed, "offset = 0.25"), encoding="utf-8")
+    for command in (["check", str(scene)], ["run", str(scene), "--out", str(tmp_path / "out")]):
+        assert main(command) == 2
+        told = capsys.readouterr().err
+        assert "the slide runs 0.25 m from C but A is only " in told, told
+        assert "the scene's keys that set it: groups[0].offset = 0.25, " in told, told
+        assert told.count("groups[0].offset") == 1, told
+    assert not (tmp_path / "out").exists()

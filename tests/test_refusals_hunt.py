@@ -108,7 +108,7 @@ def test_an_rpr_slide_farther_from_c_than_a_ever_comes_names_the_offset_and_a_s_
     # The first position, φ = 90°: A = (0, 0.15), |CA| = √(0.06² + 0.19²).
     ca = math.hypot(0.06, 0.19)
     head = (f"A cannot be assembled at position 1 (φ = 90°) in group II(3,4): the slide runs 0.5 m from C "
-            f"(groups[0].offset) but A is only {ca:.6g} m from C, so the block at A cannot reach it; the scene's keys "
+            f"but A is only {ca:.6g} m from C, so the block at A cannot reach it; the scene's keys "
             f"that set it: groups[0].offset = {offset}, driver.length = 0.15, frame.points.O, frame.points.C; ")
     assert message.startswith(head), message
     farthest = 0.15 + OC
@@ -132,7 +132,7 @@ def test_an_rpr_slide_out_of_reach_at_some_angles_names_the_offset_the_distance_
     assert ca < 0.1
     assert message.startswith(
         f"A cannot be assembled at position 8 (φ = 300°) in group II(3,4): the slide runs 0.1 m from C "
-        f"(groups[0].offset) but A is only {ca:.6g} m from C, so the block at A cannot reach it; the scene's keys "
+        f"but A is only {ca:.6g} m from C, so the block at A cannot reach it; the scene's keys "
         "that set it: groups[0].offset = 0.1, driver.length = 0.15, frame.points.O, frame.points.C; link 2 reaches "
         "only from "), message
 

@@ -1408,7 +1408,7 @@ def test_rpr_offset_wider_than_the_reach() -> None:
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error).startswith("A cannot be assembled at position 8 (φ = 210°) in group II(3,4): "
-                                 "the slide runs 0.3 m from C (groups[0].offset) but A is only 0.264575 m from C, so "
+                                 "the slide runs 0.3 m from C but A is only 0.264575 m from C, so "
                                  "the block at A cannot reach it; the scene's keys that set it: groups[0].offset = 0.3, "
                                  "driver.length = ")
 

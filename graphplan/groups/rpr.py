@@ -58,9 +58,11 @@ class RPR(Group):
         return cls(where=table.path, links=links, joints=joints, offset=offset)
 
     def _out_of_reach(self, gap: float) -> str:
-        """Why the block pivoted at A, ``gap`` m from C, cannot reach the slide: it runs farther from C than that."""
+        """Why the block pivoted at A, ``gap`` m from C, cannot reach the slide: it runs farther from C than that.
+        The offset's key is left to the list of the scene's keys that set it, which the refusal ends with
+        (:func:`graphplan.reach_advice.keys_setting`): named here too, it was named twice."""
         a_name, c_name = self.joints
-        return (f"the slide runs {abs(self.offset):.6g} m from {c_name} ({self.where}.offset) but {a_name} is only "
+        return (f"the slide runs {abs(self.offset):.6g} m from {c_name} but {a_name} is only "
                 f"{gap:.6g} m from {c_name}, so the block at {a_name} cannot reach it")
 
     def nowhere(self, before: Motion) -> str | None:
