@@ -59,7 +59,7 @@ from .rotor_lengths import (
     heaviest_rotor,
     rotor_length,
 )
-from .rounding import ROUNDING_NOISE
+from .rounding import ROUNDING_NOISE, rounded_up
 from .table_keys import keys_of_other_tables
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
@@ -502,12 +502,14 @@ def read_balancing(table: Table) -> BalancingSpec:
         if len(given) > 1:
             raise SceneError(table.where("planes"), "is required when the masses lie in different planes: "
                                                     "[zL, zR] for dynamic balancing, or [z] to balance the force only")
-    radius = _correction_radius(table, count)
+    radius, radius_keys = _correction_radius(table, count)
     plane_names = _plane_names(table, count)
     table.done(elsewhere=keys_of_other_tables("balancing"))
     _refuse_label_clash(table, named, plane_names, count)
     spec = BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
-    _check_computable(balance(spec), table.where("planes"))
+    result = balance(spec)
+    _check_computable(result, table.where("planes"))
+    _refuse_correction_beyond_rotor(result, radius_keys)
     return spec
 
 
@@ -605,11 +607,48 @@ def _planes(table: Table) -> tuple[float, ...]:
     return planes
 
 
-def _correction_radius(table: Table, count: int) -> tuple[float, ...] | None:
+def _refuse_correction_beyond_rotor(result: BalancingResult, keys: tuple[str, ...]) -> None:
+    """Refuse a correction radius so small that the correction mass mb = |mb·rb|/rb outweighs any rotor of the
+    scene's size (``correction_radius = 1e-9`` put 1.4e9 kg in a plane of the rotor starter's 42 kg of masses): at
+    its key, with the correction mass and the least radius that keeps it within such a rotor.
+
+    The bound is :func:`~graphplan.rotor_lengths.heaviest_rotor`, as for the masses' own (:func:`masses_in_grams`): a
+    correction is fixed on the rotor, near its rim, so the rotor reaches at least as far out as the corrections and
+    the masses turn, R, over the masses' and planes' span, and no rotor that size, solid steel twice as large in
+    radius and length, weighs more; a correction heavier than that is no part of it.  Where the masses outweigh it
+    themselves, R is no rotor's size (a heavy disc's eccentricity; or masses in grams, which are warned of, and
+    whose corrections follow them): the correction is then weighed against the largest rotor, LARGEST_RADIUS_M in
+    radius and LONGEST_ROTOR_M long.  A larger radius only raises the bound, so the least radius told is one the
+    check takes."""
+    spec = result.spec
+    if not keys:
+        return
+    along = [mass.plane for mass in spec.masses] + list(spec.planes)
+    span = max(along) - min(along)
+    radius = max([mass.radius for mass in spec.masses] + [plane.radius or 0.0 for plane in result.planes])
+    rotor = f"any rotor whose masses and corrections turn within {radius:g} m of its axis over {span:g} m along it"
+    if sum(mass.mass for mass in spec.masses) > heaviest_rotor(radius, span):
+        radius, span = LARGEST_RADIUS_M, LONGEST_ROTOR_M
+        rotor = f"any rotor, the largest {radius:g} m in radius and {span:g} m long"
+    heaviest = heaviest_rotor(radius, span)
+    plane, key = max(zip(result.planes, keys, strict=True), key=lambda pair: pair[0].mass or 0.0)
+    if not (plane.mass or 0.0) > heaviest:
+        return
+    cylinder_radius, cylinder_length = bounding_cylinder(radius, span)
+    least = rounded_up(plane.mass_radius / heaviest)
+    raise SceneError(key, f"puts a correction mass of {plane.mass:.4g} kg in plane {plane.name}, its |m·r| of "
+                     f"{plane.mass_radius:.4g} kg·m over {plane.radius:g} m: heavier than {rotor} "
+                     f"(solid steel filling a cylinder {cylinder_radius:g} m in radius and {cylinder_length:g} m long, {heaviest:.3g} kg); a "
+                     f"correction goes near the rim: give a correction radius of at least {least:g} m", plane.radius)
+
+
+def _correction_radius(table: Table, count: int) -> tuple[tuple[float, ...] | None, tuple[str, ...]]:
+    """The correction radii, one per plane, and the key each was given at (one for all where one number is
+    given); None and no keys without a correction radius."""
     value = table.raw("correction_radius", None)
     where = table.where("correction_radius")
     if value is None:
-        return None
+        return None, ()
     if isinstance(value, list):
         if len(value) != count:
             raise SceneError(where, f"must be one radius or one per correction plane ({count})", value)
@@ -621,7 +660,10 @@ def _correction_radius(table: Table, count: int) -> tuple[float, ...] | None:
     for at, radius in zip(wheres, radii, strict=True):
         if not radius > 0:
             raise SceneError(at, "must be > 0", radius)
-    return radii
+        if radius <= ROUNDING_NOISE:
+            raise SceneError(at, f"must be above {ROUNDING_NOISE:g} m, the size the note writes as 0 (the radius "
+                             "is in m)", radius, hint="; a slip of the exponent?")
+    return radii, tuple(wheres)
 
 
 def _plane_names(table: Table, count: int) -> tuple[str, ...]:

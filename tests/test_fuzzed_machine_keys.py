@@ -452,3 +452,42 @@ def test_a_plane_named_as_a_symbol_is_refused_at_its_key(tmp_path, capsys, names
     told = _refused(capsys, main(["check", str(scene)]))
     assert told.startswith("graphplan: error: balancing.plane_names"), told
     assert said in told, told
+
+
+@pytest.mark.parametrize(("radius", "said"), [
+    (1e-14, "must be above 1e-10 m, the size the note writes as 0"),
+    (1e-9, "puts a correction mass of "),
+    (0.005, "puts a correction mass of "),
+], ids=["written-as-nought", "a-billion-kg", "ten-of-the-masses"])
+def test_a_correction_radius_that_gives_no_rotor_s_correction_mass_is_refused_at_its_key(tmp_path, capsys, radius,
+                                                                                      said) -> None:
+    """`correction_radius` had no bound: at 1e-9 m the rotor starter's plane L took a correction of 1.4e9 kg
+    (mb = |mb·rb|/rb), at 1e-14 m one the note wrote beside a radius of 0.  The starter's masses turn within 0.06 m
+    of the axis over the 0.22 m from the first mass's plane to plane R, and no rotor that size outweighs solid steel
+    filling a cylinder twice as large in radius and in length, 7850·π·0.12²·0.44 kg: a correction heavier than that
+    is none fixed on it.  Each radius is refused at its key by run and check alike, with the least radius that keeps
+    plane L's correction within it, and nothing is written; that radius, and the starter's 0.05 m, run."""
+    text = _starter(tmp_path, "rotor")
+    typed = "correction_radius = 0.05 "
+    assert text.count(typed) == 1 and "planes = [0.04, 0.22]" in text
+    masses = ((18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08), (10.0, 0.04, 135.0, 0.16))
+    for mass, mass_radius, angle, plane in masses:
+        assert f"mass = {mass}, radius = {mass_radius}, angle = {angle}, plane = {plane}" in text
+    # Plane L's correction balances each mass's share (zR − z)/(zR − zL) of its m·r.
+    share = sum(mass * mass_radius * (0.22 - plane) / 0.18 * complex(math.cos(math.radians(angle)),
+                                                                     math.sin(math.radians(angle)))
+                for mass, mass_radius, angle, plane in masses)
+    heaviest = 7850.0 * math.pi * (2 * 0.06) ** 2 * (2 * 0.22)
+    scene = _scene(tmp_path, text.replace(typed, f"correction_radius = {radius!r} "))
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith(f"graphplan: error: balancing.correction_radius: {said}"), told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+    if "correction mass" in said:
+        assert f"{abs(share) / radius:.4g} kg in plane L" in told, told
+        least = float(told.split("give a correction radius of at least ")[1].split(" m")[0])
+        assert abs(share) / heaviest <= least == pytest.approx(abs(share) / heaviest, rel=0.02)
+        assert main(["check", str(_scene(tmp_path, text.replace(typed, f"correction_radius = {least!r} ")))]) == 0
+    assert main(["check", str(_scene(tmp_path, text))]) == 0
