@@ -356,8 +356,8 @@ def test_a_travel_too_short_for_its_positions_to_be_drawn_apart_is_told_at_the_t
     drawn at most 5000 mm across (the largest paper), and the mechanism at its first position already spans the
     0.25 m from G = [0, 0] up to C = [0.15, 0.25]: a step of the slider is drawn at most travel/11 · 5000/0.25 mm,
     and lines are told apart to the drafting precision (0.5 mm), so the 11 steps need a travel of at least
-    11 · 0.5 · 0.25/5000 m.  Refused at `driver.travel` with that value, before anything is written; the travel
-    told checks, and so does the fixture's 0.2 m."""
+    11 · 0.5 · 0.25/5000 m.  Refused at `driver.travel` with that value by run and check alike, before anything is
+    written; the travel told checks, and so does the fixture's 0.2 m."""
     fixture = (FIXTURES / "slider_driven.toml").read_text(encoding="utf-8")
     typed = "travel       = [0.0, 0.20]"
     assert typed in fixture and "G = [0.0, 0.0], C = [0.15, 0.25]" in fixture and "count       = 12" in fixture
@@ -373,6 +373,8 @@ def test_a_travel_too_short_for_its_positions_to_be_drawn_apart_is_told_at_the_t
     assert told.startswith("graphplan: error: driver.travel: "), told
     least = float(re.search(r"give a travel of at least ([0-9.e+-]+) m", told).group(1))
     assert least == pytest.approx(11 * 0.5 * 0.25 / 5000, rel=0.02)
+    assert main(["check", str(scene)]) == 2
+    assert capsys.readouterr().err == told
     for travel in (f"[0.0, {least!r}]", "[0.0, 0.20]"):
         scene.write_text(fixture.replace(typed, f"travel = {travel}"), encoding="utf-8")
         assert main(["check", str(scene)]) == 0, capsys.readouterr().err
