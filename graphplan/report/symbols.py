@@ -88,15 +88,18 @@ SYMBOL = re.compile(
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
+# A plan's letters, small as its points' names are capital, in any of the alphabets a scene may name them in.
+_SMALL = "a-zа-яёα-ω"
+
 # A point's name with its link's number below, as the drawings letter it: a mechanism's point standing alone (A4, Σ6;
 # a spring's free length L0 and a motor's stall torque M0 alike), and a plan's, whose vectors run their points' names
 # together: ps2 (from the pole p to s₂), pa4, b4k5, πn3, pσ6, n6′.  A plan's run is of at most three points with a
 # number in it, standing whole, so that no word of the note's languages and no number (1e2) is taken for one; a
 # mechanism's point is one capital alone, so that an integrator's name (RK45, DOP853) is none.  An arm of an inertia
 # force (hu4) is the drawings' own shape, not the vector from h to u₄.
-NUMBERED_POINTS = re.compile(rf"(?<![\w.′″])(?:[{CAPITALS}]\d+[′″]*|(?!h[uи]\d)(?=[a-zπσ′″]*\d)(?:[a-zπσ]\d*[′″]*){{1,3}})"
+NUMBERED_POINTS = re.compile(rf"(?<![\w.′″])(?:[{CAPITALS}]\d+[′″]*|(?!h[uи]\d)(?=[{_SMALL}′″]*\d)(?:[{_SMALL}]\d*[′″]*){{1,3}})"
                              r"(?![\w])")
-_POINT = re.compile(rf"([{CAPITALS}a-zπσ])(\d*)([′″]*)")
+_POINT = re.compile(rf"([{CAPITALS}{_SMALL}])(\d*)([′″]*)")
 
 # Superscript letters stand for the component they show: aBAⁿ is aBA with an n above.
 _SUPERSCRIPT = {"ⁿ": "n", "ᵏ": "k", "ʳ": "r"}
