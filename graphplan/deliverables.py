@@ -83,13 +83,13 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str 
     if piece == "note" and analysis is None and (
             scene.balancing is not None or scene.vibration is not None or missing(scene, None, "dynamics") is None):
         return None  # the note on the machine's flywheel, rotor or vibration alone
-    if piece == "sheets" and analysis is None and scene.drawing.sheet != "none" and (
-            scene.balancing is not None or missing(scene, None, "dynamics") is None):
-        return None  # a rotor's balancing and a machine's load diagrams have sheets of their own
+    # A rotor's balancing and a machine's load diagrams have sheets of their own: a scene of them alone asked for
+    # sheets on "none" was told it "needs a mechanism", which it does not, and not the sheet format that stops them.
+    drawn_on_sheets = analysis is not None or scene.balancing is not None or missing(scene, None, "dynamics") is None
+    if piece == "sheets" and drawn_on_sheets:
+        return f'needs a sheet format: {sheet_key} is "none"' if scene.drawing.sheet == "none" else None
     if analysis is None:
         return _NO_LINKAGE
-    if piece == "sheets" and scene.drawing.sheet == "none":
-        return f'needs a sheet format: {sheet_key} is "none"'
     from . import kinematic_diagrams, load_diagrams
 
     if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene, analysis)) is not None:

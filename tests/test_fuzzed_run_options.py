@@ -1,0 +1,44 @@
+"""What a fuzzer of `graphplan run`'s options (scenes × --only × --format × --sheet × --locale × --figures × the
+output folder) found: each refusal names the option at fault and its real cause, in one line, and writes nothing.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from graphplan.cli import main
+from graphplan.starters import starter
+
+
+@pytest.fixture(autouse=True)
+def in_a_folder_of_its_own(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+
+
+def starter_scene(tmp_path: Path, kind: str) -> Path:
+    path = tmp_path / f"{kind}.toml"
+    path.write_text(starter(kind, "en"), encoding="utf-8")
+    return path
+
+
+def refusal(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
+    """The one line a refused run ends with (exit status 2, no traceback)."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err
+    return err.rstrip("\n").splitlines()[-1]
+
+
+def test_sheets_of_a_rotor_on_no_sheet_are_refused_for_the_sheet_format_not_a_mechanism(tmp_path, capsys):
+    """A rotor's balancing is drawn on sheets of its own, without a mechanism (the same run on A3 draws them): on
+    --sheet none the refusal said the scene "needs a mechanism", sending the user to add a linkage it does not need."""
+    scene = starter_scene(tmp_path, "rotor")
+    assert main(["run", str(scene), "--out", str(tmp_path / "a3"), "--only", "sheets", "--sheet", "A3"]) == 0
+    assert (tmp_path / "a3" / "sheet_1.svg").is_file()
+    capsys.readouterr()
+    told = refusal(capsys, ["run", str(scene), "--out", str(tmp_path / "none"), "--only", "sheets", "--sheet", "none"])
+    assert "--sheet" in told and '"none"' in told, told
+    assert "mechanism" not in told, told
+    assert not (tmp_path / "none").exists()
