@@ -24,7 +24,7 @@ from .choices import OUTPUT_PIECES
 from .errors import SceneError
 from .locale import strings
 from .machine_dynamics import MachineDynamics
-from .reader import check_choice
+from .reader import check_choice, check_choices
 from .render.primitives import Layer, in_language
 
 # The scene, the analysis and what reads them are imported where they are used: the command line's parser takes
@@ -653,7 +653,7 @@ def _dxf(drawing: Drawing) -> bytes:
 
 def check_formats(formats: Iterable[str], where: str = "--format") -> tuple[str, ...]:
     """``formats`` checked against :data:`FORMATS`; SVG is always written."""
-    asked = [check_choice(kind, f"{where}[{k}]", FORMATS) for k, kind in enumerate(formats)]
+    asked = check_choices(formats, where, FORMATS, "format")
     return tuple(kind for kind in FORMATS if kind == "svg" or kind in asked)
 
 

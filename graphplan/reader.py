@@ -212,6 +212,20 @@ def check_choice(value: Any, where: str, choices: tuple[str, ...]) -> str:
     return text
 
 
+def check_choices(values: Any, where: str, choices: tuple[str, ...], noun: str) -> list[str]:
+    """Each of ``values`` one of ``choices`` (``where[k]`` naming the one that is not), and none listed twice: a
+    repeat is most likely a slip for another choice, which would then be left out without a word (``noun`` names
+    what is listed: "piece", "format")."""
+    chosen: list[str] = []
+    for k, value in enumerate(values):
+        choice = check_choice(value, f"{where}[{k}]", choices)
+        if choice in chosen:
+            raise SceneError(f"{where}[{k}]", f"{choice} is already listed at {where}[{chosen.index(choice)}]: list "
+                             f"each {noun} once", value)
+        chosen.append(choice)
+    return chosen
+
+
 # Words people write for a value that has a shorter name here.
 ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw",
            "anti-clockwise": "ccw",

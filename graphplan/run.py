@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .errors import GraphplanError, SceneError
-from .reader import check_choice
+from .reader import check_choice, check_choices
 from .scene import LOCALES, Scene, check_sheet
 
 if TYPE_CHECKING:
@@ -111,7 +111,7 @@ def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterab
     if only is not None:
         # A piece mistyped is told at once, as a format is, not once the mechanism is analysed; what the scene has
         # data for is known only then.
-        only = [check_choice(piece, f"{options.only}[{k}]", PIECES) for k, piece in enumerate(only)]
+        only = check_choices(only, options.only, PIECES, "piece")
     # A folder the run could never write is told at once, not once the analysis and the drawings are done.
     check_folder(folder, options.out)
     tell("analysing the mechanism" if scene.has_linkage else "analysing the machine")

@@ -42,3 +42,18 @@ def test_sheets_of_a_rotor_on_no_sheet_are_refused_for_the_sheet_format_not_a_me
     assert "--sheet" in told and '"none"' in told, told
     assert "mechanism" not in told, told
     assert not (tmp_path / "none").exists()
+
+
+@pytest.mark.parametrize(("argv", "told"), [
+    (["--only", "balancing,balancing"], "--only[1]: balancing is already listed at --only[0]"),
+    (["--only", "vibration", "--only", "balancing", "--only", "vibration"],
+     "--only[2]: vibration is already listed at --only[0]"),
+    (["--only", "balancing", "--format", "png,png"], "--format[1]: png is already listed at --format[0]"),
+])
+def test_a_piece_or_format_listed_twice_is_refused_at_the_repeat(tmp_path, capsys, argv, told):
+    """The scene's [output] include refuses a piece listed twice (most likely a slip for another, which the run
+    then left out without a word); --only and --format took the repeat silently, as if the list were shorter."""
+    scene = starter_scene(tmp_path, "rotor")
+    line = refusal(capsys, ["run", str(scene), "--out", str(tmp_path / "out"), *argv])
+    assert told in line, line
+    assert not (tmp_path / "out").exists()
