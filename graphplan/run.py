@@ -107,6 +107,12 @@ def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterab
     from .output import check_folder
 
     tell = say if say is not None else (lambda stage: None)
+    # The command line refuses an empty list as it parses it; scene.write(only=[]) wrote results.json alone, and
+    # formats=[] the SVG, without a word, where the same run from the command line was refused.
+    only, formats = (list(only) if only is not None else None), list(formats)  # a generator is read once
+    for given, option, what in ((only, options.only, "pieces"), (formats, options.formats, "formats")):
+        if given is not None and not given:
+            raise SceneError(option, f"names nothing: give one or more {what}")
     formats = check_formats(formats, options.formats)
     if only is not None:
         # A piece mistyped is told at once, as a format is, not once the mechanism is analysed; what the scene has

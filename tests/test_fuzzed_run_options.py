@@ -57,3 +57,20 @@ def test_a_piece_or_format_listed_twice_is_refused_at_the_repeat(tmp_path, capsy
     line = refusal(capsys, ["run", str(scene), "--out", str(tmp_path / "out"), *argv])
     assert told in line, line
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(("given", "option"), [({"only": []}, "only"), ({"formats": ()}, "formats")])
+def test_an_empty_list_of_pieces_or_formats_is_refused_from_python_as_from_the_command_line(tmp_path, capsys,
+                                                                                            given, option):
+    """`--only ""` and `--format ""` are refused ("names nothing"); scene.write, which takes the same options through
+    the same run, wrote results.json alone for only=[] (and the SVG for formats=[]) without a word."""
+    import graphplan
+
+    scene = starter_scene(tmp_path, "rotor")
+    with pytest.raises(SystemExit) as stopped:  # argparse's refusal, under the command's usage
+        main(["run", str(scene), "--out", str(tmp_path / "cli"), f"--{option.removesuffix('s')}", ""])
+    assert stopped.value.code == 2
+    assert "names nothing" in capsys.readouterr().err
+    with pytest.raises(graphplan.SceneError, match=rf"^{option}: names nothing"):
+        graphplan.load(scene).write(tmp_path / "py", **given)
+    assert not (tmp_path / "py").exists()
