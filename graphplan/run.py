@@ -92,8 +92,11 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
         return _run(as_asked(scene, locale, sheet, options), folder, only, formats, figures, options, sheet_key, say)
     except SceneError as error:
         if sheet is not None and error.where == "drawing.sheet":
-            renamed = SceneError(f"{options.sheet} (in place of drawing.sheet)", error.problem, error.value,
-                                 hint=error.hint)
+            # The way out the drawings offer, the scene's key sheet = "none", spelt as the option that was given in
+            # its place: the user who typed --sheet A4 was told to write a key the scene need not have.
+            no_sheet = f"{options.sheet} none" if options.sheet.startswith("-") else f'{options.sheet}="none"'
+            renamed = SceneError(f"{options.sheet} (in place of drawing.sheet)",
+                                 error.problem.replace('sheet = "none"', no_sheet), error.value, hint=error.hint)
             for note in getattr(error, "__notes__", ()):
                 renamed.add_note(note)
             raise renamed from None

@@ -11,6 +11,8 @@ import pytest
 from graphplan.cli import main
 from graphplan.starters import starter
 
+ROOT = Path(__file__).resolve().parent.parent
+
 
 @pytest.fixture(autouse=True)
 def in_a_folder_of_its_own(tmp_path, monkeypatch):
@@ -74,3 +76,13 @@ def test_an_empty_list_of_pieces_or_formats_is_refused_from_python_as_from_the_c
     with pytest.raises(graphplan.SceneError, match=rf"^{option}: names nothing"):
         graphplan.load(scene).write(tmp_path / "py", **given)
     assert not (tmp_path / "py").exists()
+
+
+def test_a_sheet_option_too_small_is_told_the_option_that_draws_no_sheet(tmp_path, capsys):
+    """--sheet A4 too small for the shaper's plans was told `or sheet = "none"`: a key of the scene, which names no
+    sheet, where the way out is the option the user typed, --sheet none."""
+    argv = ["run", str(ROOT / "fixtures" / "shaper_six_bar.toml"), "--only", "positions,sheets"]
+    told = refusal(capsys, [*argv, "--out", str(tmp_path / "a4"), "--sheet", "A4"])
+    assert told.startswith("graphplan: error: --sheet (in place of drawing.sheet): "), told
+    assert 'sheet = "none"' not in told and "or --sheet none" in told, told
+    assert not (tmp_path / "a4").exists()
