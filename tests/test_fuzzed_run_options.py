@@ -86,3 +86,15 @@ def test_a_sheet_option_too_small_is_told_the_option_that_draws_no_sheet(tmp_pat
     assert told.startswith("graphplan: error: --sheet (in place of drawing.sheet): "), told
     assert 'sheet = "none"' not in told and "or --sheet none" in told, told
     assert not (tmp_path / "a4").exists()
+
+
+def test_the_largest_sheet_is_offered_alone_not_with_a_bigger_one(tmp_path, capsys):
+    """The Stephenson six-bar's plans fit on A1 alone, the largest format graphplan draws (the last of --sheet's
+    choices): the refusal of A4 told "choose A1 or a bigger sheet", a sheet no option gives."""
+    from graphplan.choices import SHEETS
+
+    largest = next(sheet for sheet in SHEETS if sheet != "none")
+    scene = str(ROOT / "fixtures" / "stephenson_six_bar.toml")
+    told = refusal(capsys, ["run", scene, "--only", "positions,sheets", "--out", str(tmp_path / "a4"), "--sheet", "A4"])
+    assert f"choose {largest}," in told and f"choose {largest} or a bigger sheet" not in told, told
+    assert not (tmp_path / "a4").exists()

@@ -883,7 +883,8 @@ def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: 
     else:
         what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
     bigger = bigger_holding(sheet, form, [panel])
-    ways = [f"choose {bigger} or a bigger sheet"] if bigger else []
+    # The largest format graphplan draws is told alone: "choose A1 or a bigger sheet" offered sheets it has not.
+    ways = [f"choose {bigger}{' or a bigger sheet' if bigger in BIGGER else ''}"] if bigger else []
     # Only a drawing at μl shrinks with a larger μl: the dynamics and the diagrams are at scales the program fits.
     ways += ["a larger μl (drawing.length_scale)"] if not bigger and panel.to_scale else []
     ways.append('sheet = "none"')

@@ -1386,7 +1386,8 @@ def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel
     ways = ["give " + " and ".join(fixes)] if fixes else []
     bigger = bigger_holding(sheet, form, panels)
     if bigger is not None:
-        ways.append(f"choose {bigger} or a bigger sheet")
+        # The largest format graphplan draws is told alone: "or a bigger sheet" offered sheets it has not.
+        ways.append(f"choose {bigger}{' or a bigger sheet' if bigger in BIGGER else ''}")
     ways.append('sheet = "none"')
     raise SceneError("drawing.sheet",
                      f"{'; '.join(found.what for found in overflows)}: no {sheet} sheet holds "
