@@ -32,6 +32,7 @@ from .lookalikes import plain as lookalike_plain
 from .reader import (
     Table,
     check_choice,
+    check_choices,
     check_int,
     check_number,
     check_str,
@@ -1364,13 +1365,5 @@ def _read_output(table: Table | None) -> tuple[str, ...] | None:
     table.done(elsewhere=keys_of_other_tables("output"))
     if pieces is None:
         return None
-    # A piece listed again is refused as a position listed again under positions.plans is: most likely a slip for
-    # another piece, which the run would then leave out without a word.
-    chosen: list[str] = []
-    for where, item in pieces:
-        piece = check_choice(item, where, OUTPUT_PIECES)
-        if piece in chosen:
-            raise SceneError(where, f"{piece} is already listed at {table.where('include')}[{chosen.index(piece)}]: "
-                             "list each piece once", item)
-        chosen.append(piece)
-    return tuple(chosen)
+    # A piece listed again is refused, as --only's is: most likely a slip for another piece.
+    return tuple(check_choices([item for _, item in pieces], table.where("include"), OUTPUT_PIECES, "piece"))
