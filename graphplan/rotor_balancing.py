@@ -58,6 +58,7 @@ from .rotor_lengths import (
     bounding_cylinder,
     heaviest_rotor,
     rotor_length,
+    solid_steel_reach,
 )
 from .rounding import ROUNDING_NOISE, rounded_up
 from .table_keys import keys_of_other_tables
@@ -607,6 +608,26 @@ def _planes(table: Table) -> tuple[float, ...]:
     return planes
 
 
+def _rotor_holding(spec: BalancingSpec, radii: Sequence[float]) -> tuple[float, float, float]:
+    """The size a rotor is weighed at whose corrections turn at ``radii``: how far out its masses and corrections
+    turn, R, and the radius it is weighed at (R, or, where R does not hold its masses, the least that does), m; and
+    their span along the axis, m (:func:`_refuse_correction_beyond_rotor`)."""
+    along = [mass.plane for mass in spec.masses] + list(spec.planes)
+    span = max(along) - min(along)
+    turning = max([mass.radius for mass in spec.masses] + list(radii))
+    masses = sum(mass.mass for mass in spec.masses)
+    return turning, solid_steel_reach(masses, span) if masses > heaviest_rotor(turning, span) else turning, span
+
+
+def _holds(spec: BalancingSpec, radii: Sequence[float], keys: tuple[str, ...], k: int, radius: float,
+           mass_radius: float) -> bool:
+    """Whether plane ``k``'s correction of |m·r| ``mass_radius`` is within the rotor at ``radius`` given at its key
+    (every plane that key sets turned at it)."""
+    given = [radius if key == keys[k] else other for key, other in zip(keys, radii, strict=True)]
+    _, weighed, span = _rotor_holding(spec, given)
+    return mass_radius / radius <= heaviest_rotor(weighed, span)
+
+
 def _refuse_correction_beyond_rotor(result: BalancingResult, keys: tuple[str, ...]) -> None:
     """Refuse a correction radius so small that the correction mass mb = |mb·rb|/rb outweighs any rotor of the
     scene's size (``correction_radius = 1e-9`` put 1.4e9 kg in a plane of the rotor starter's 42 kg of masses): at
@@ -616,30 +637,47 @@ def _refuse_correction_beyond_rotor(result: BalancingResult, keys: tuple[str, ..
     correction is fixed on the rotor, near its rim, so the rotor reaches at least as far out as the corrections and
     the masses turn, R, over the masses' and planes' span, and no rotor that size, solid steel twice as large in
     radius and length, weighs more; a correction heavier than that is no part of it.  Where the masses outweigh it
-    themselves, R is no rotor's size (a heavy disc's eccentricity; or masses in grams, which are warned of, and
-    whose corrections follow them): the correction is then weighed against the largest rotor, LARGEST_RADIUS_M in
-    radius and LONGEST_ROTOR_M long.  A larger radius only raises the bound, so the least radius told is one the
-    check takes."""
+    themselves, R is not yet the rotor's size: the radii are eccentricities (a rotor of one mass is often a heavy
+    disc 2 mm off its axis, which a correction radius of 1e-9 m gave a correction of 1e9 kg) or the masses are in
+    grams (warned of; their corrections follow them).  A rotor that holds them reaches at least as far as solid steel
+    weighing them does (:func:`~graphplan.rotor_lengths.solid_steel_reach`), and is weighed at that size as any
+    other: its corrections may weigh up to ROTOR_REACH³ times its masses.  The least radius told is one the check
+    takes, found with the rotor's size at that radius."""
     spec = result.spec
     if not keys:
         return
-    along = [mass.plane for mass in spec.masses] + list(spec.planes)
-    span = max(along) - min(along)
-    radius = max([mass.radius for mass in spec.masses] + [plane.radius or 0.0 for plane in result.planes])
-    rotor = f"any rotor whose masses and corrections turn within {radius:g} m of its axis over {span:g} m along it"
-    if sum(mass.mass for mass in spec.masses) > heaviest_rotor(radius, span):
-        radius, span = LARGEST_RADIUS_M, LONGEST_ROTOR_M
-        rotor = f"any rotor, the largest {radius:g} m in radius and {span:g} m long"
+    radii = [plane.radius or 0.0 for plane in result.planes]
+    turning, radius, span = _rotor_holding(spec, radii)
     heaviest = heaviest_rotor(radius, span)
-    plane, key = max(zip(result.planes, keys, strict=True), key=lambda pair: pair[0].mass or 0.0)
+    k = max(range(len(result.planes)), key=lambda index: result.planes[index].mass or 0.0)
+    plane = result.planes[k]
     if not (plane.mass or 0.0) > heaviest:
         return
     cylinder_radius, cylinder_length = bounding_cylinder(radius, span)
+    steel = (f"solid steel filling a cylinder {cylinder_radius:.3g} m in radius and {cylinder_length:.3g} m long, "
+             f"{heaviest:.4g} kg")
+    if radius == turning:
+        rotor = (f"any rotor whose masses and corrections turn within {radius:g} m of its axis over {span:g} m along "
+                 f"it ({steel})")
+    else:
+        rotor = (f"any rotor that holds its masses, {sum(mass.mass for mass in spec.masses):g} kg together, turning "
+                 f"within {turning:g} m of its axis: as solid steel they reach {radius:.3g} m from it over "
+                 f"{rotor_length(radius, span):.3g} m along it, and no rotor that size outweighs {steel}")
     least = rounded_up(plane.mass_radius / heaviest)
-    raise SceneError(key, f"puts a correction mass of {plane.mass:.4g} kg in plane {plane.name}, its |m·r| of "
-                     f"{plane.mass_radius:.4g} kg·m over {plane.radius:g} m: heavier than {rotor} "
-                     f"(solid steel filling a cylinder {cylinder_radius:g} m in radius and {cylinder_length:g} m long, {heaviest:.3g} kg); a "
-                     f"correction goes near the rim: give a correction radius of at least {least:g} m", plane.radius)
+    if not _holds(spec, radii, keys, k, least, plane.mass_radius):
+        # At a larger radius the radii may hold the masses, and the rotor is weighed at that radius (a two-plane
+        # rotor whose masses lie far beyond its planes loads one with shares of m·r many times their own): beyond
+        # it a larger radius only lightens the correction and raises the bound, so the least is found by halving.
+        low, high = least, 2 * least
+        while not _holds(spec, radii, keys, k, high, plane.mass_radius):
+            low, high = high, 2 * high
+        for _ in range(60):
+            middle = (low + high) / 2
+            low, high = (low, middle) if _holds(spec, radii, keys, k, middle, plane.mass_radius) else (middle, high)
+        least = rounded_up(high)
+    raise SceneError(keys[k], f"puts a correction mass of {plane.mass:.4g} kg in plane {plane.name}, its |m·r| of "
+                     f"{plane.mass_radius:.4g} kg·m over {plane.radius:g} m: heavier than {rotor}; a correction goes "
+                     f"near the rim: give a correction radius of at least {least:g} m", plane.radius)
 
 
 def _correction_radius(table: Table, count: int) -> tuple[tuple[float, ...] | None, tuple[str, ...]]:

@@ -101,6 +101,14 @@ def heaviest_rotor(radius: float, span: float) -> float:
     return solid_steel_cylinder(*bounding_cylinder(radius, span))
 
 
+def solid_steel_reach(mass: float, span: float) -> float:
+    """How far (m) from its axis a rotor reaches at the least that holds ``mass`` (kg) over ``span`` (m) along it:
+    the radius of solid steel, the densest body a rotor is, weighing ``mass`` as a cylinder of its
+    :func:`rotor_length` (so that :func:`heaviest_rotor` of that radius is ``ROTOR_REACH``³ times ``mass``)."""
+    disc = (mass / solid_steel_cylinder(1.0, 1.0)) ** (1.0 / 3.0)
+    return disc if disc >= span else math.sqrt(mass / solid_steel_cylinder(1.0, span))
+
+
 @dataclass(frozen=True)
 class Implausible:
     """One length of the scene that no machine has, as metres.
@@ -192,4 +200,5 @@ class LengthsInMillimetres:
 __all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
            "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "ROTOR_REACH",
            "SOME_IN_MILLIMETRES", "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible",
-           "LengthsInMillimetres", "bounding_cylinder", "heaviest_rotor", "lightest_rotor", "rotor_length"]
+           "LengthsInMillimetres", "bounding_cylinder", "heaviest_rotor", "lightest_rotor", "rotor_length",
+           "solid_steel_reach"]

@@ -491,3 +491,32 @@ def test_a_correction_radius_that_gives_no_rotor_s_correction_mass_is_refused_at
         assert abs(share) / heaviest <= least == pytest.approx(abs(share) / heaviest, rel=0.02)
         assert main(["check", str(_scene(tmp_path, text.replace(typed, f"correction_radius = {least!r} ")))]) == 0
     assert main(["check", str(_scene(tmp_path, text))]) == 0
+
+
+@pytest.mark.parametrize(("masses", "planes", "per_plane"), [
+    ("{ mass = 500.0, radius = 0.002, angle = 0.0 }", "", 500.0 * 0.002),
+    (("{ mass = 500.0, radius = 0.002, angle = 0.0, plane = 0.0 }, "
+      "{ mass = 500.0, radius = 0.002, angle = 90.0, plane = 1.0 }"), "planes = [0.0, 1.0]\n", 500.0 * 0.002),
+], ids=["one-disc", "two-discs"])
+def test_a_correction_radius_too_small_for_a_heavy_eccentric_rotor_is_refused_at_its_key(tmp_path, capsys, masses,
+                                                                                       planes, per_plane) -> None:
+    """A flywheel of 500 kg 2 mm off its axis, balanced in one plane at correction_radius = 1e-9, ran and put a
+    correction of 1e9 kg on it, with a caution of millimetres alone: its radius holds no rotor that weighs 500 kg, and
+    the correction was weighed against the largest rotor of all, 300 m of solid steel across.  A rotor that holds
+    its masses reaches at least as far as solid steel weighing them, and no rotor that size outweighs solid steel
+    twice as large in radius and length, 2³ times its masses: the correction is refused at its key past that, with
+    the least radius that keeps it within, which runs; so for two such discs on a 1 m shaft, each corrected in its own
+    plane.  Nothing is written."""
+    scene = _scene(tmp_path, f'[scene]\ntitle = "eccentric"\n[balancing]\nmasses = [ {masses} ]\n{planes}'
+                             "correction_radius = 1e-9\n")
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith("graphplan: error: balancing.correction_radius: puts a correction mass of "), told
+    assert f"{per_plane / 1e-9:.4g} kg in plane " in told, told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+    rotor_masses = 500.0 * masses.count("mass = ")
+    least = float(told.split("give a correction radius of at least ")[1].split(" m")[0])
+    assert per_plane / (2 ** 3 * rotor_masses) <= least == pytest.approx(per_plane / (2 ** 3 * rotor_masses), rel=0.1)
+    assert main(["check", str(_scene(tmp_path, scene.read_text(encoding="utf-8").replace(
+        "correction_radius = 1e-9", f"correction_radius = {least!r}")))]) == 0
