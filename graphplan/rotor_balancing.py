@@ -60,7 +60,7 @@ from .rotor_lengths import (
     rotor_length,
     solid_steel_reach,
 )
-from .rounding import ROUNDING_NOISE, rounded_up
+from .rounding import ROUNDING_NOISE, rounded_up, written_as_nought
 from .table_keys import keys_of_other_tables
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
@@ -527,15 +527,14 @@ def _refuse_written_as_nought(entry: Table, mass: float, radius: float) -> None:
     each as 0 (a mass of 1e-14 kg its m = 0 and m·r = 0 beside the others' products, as though it were not there), as
     no rotor's part is so light or so near its axis.  A radius of 0, a mass on the axis, is as typed."""
     if mass <= ROUNDING_NOISE:
-        raise SceneError(entry.where("mass"), f"must be above {ROUNDING_NOISE:g} kg, the size the note writes as 0: "
-                         "no rotating mass is so light (the mass is in kg; leave out a mass that is not there)", mass,
-                         hint="; a slip of the exponent?")
+        raise SceneError(entry.where("mass"), f"{written_as_nought('kg')}: no rotating mass is so light (the mass is "
+                         "in kg; leave out a mass that is not there)", mass, hint="; a slip of the exponent?")
     if 0 < radius <= ROUNDING_NOISE:
-        raise SceneError(entry.where("radius"), f"must be above {ROUNDING_NOISE:g} m, the size the note writes as 0, "
-                         "or 0 for a mass on the axis (the radius is in m)", radius, hint="; a slip of the exponent?")
+        raise SceneError(entry.where("radius"), f"{written_as_nought('m')}; a mass on the axis has radius "
+                         "= 0 (the radius is in m)", radius, hint="; a slip of the exponent?")
     if 0 < mass * radius <= ROUNDING_NOISE:
-        raise SceneError(entry.path, f"its m·r = {mass:g}·{radius:g} = {mass * radius:.3g} kg·m, not above "
-                         f"{ROUNDING_NOISE:g}, the size the note writes as 0: no rotating mass unbalances a rotor so "
+        product = f"its m·r = {mass:g}·{radius:g} = {mass * radius:.3g} kg·m"
+        raise SceneError(entry.path, f"{written_as_nought('kg·m', product)}: no rotating mass unbalances a rotor so "
                          "little (m in kg, r in m); give its mass and radius, or radius = 0 for a mass on the axis",
                          hint="; a slip of the exponent?")
 
@@ -699,8 +698,8 @@ def _correction_radius(table: Table, count: int) -> tuple[tuple[float, ...] | No
         if not radius > 0:
             raise SceneError(at, "must be > 0", radius)
         if radius <= ROUNDING_NOISE:
-            raise SceneError(at, f"must be above {ROUNDING_NOISE:g} m, the size the note writes as 0 (the radius "
-                             "is in m)", radius, hint="; a slip of the exponent?")
+            raise SceneError(at, f"{written_as_nought('m')} (the radius is in m)", radius,
+                             hint="; a slip of the exponent?")
     return radii, tuple(wheres)
 
 

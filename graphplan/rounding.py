@@ -27,6 +27,15 @@ PERCENT_FLOOR = 100.0 * RELATIVE_NOISE
 ROUNDING_NOISE = 1e-10
 
 
+def written_as_nought(unit: str, worked_out: str = "") -> str:
+    """Why a scene's value of no more than :data:`ROUNDING_NOISE` is refused, in the one wording every key's refusal
+    gives: the note and the drawings write it 0 (``render/numerals.number``), beside the values given, as though
+    it were not there.  ``unit`` is the value's; ``worked_out`` the quantity worked out of the key's values that is
+    that small, where the key's own value is not (``its m·r = 1e-06·1e-05 = 1e-11 kg·m``), said first."""
+    lead = f"{worked_out}, which " if worked_out else ""
+    return f"{lead}must be above {ROUNDING_NOISE:g} {unit}, the size the note and the drawings write as 0"
+
+
 def largest_finite(values: Any) -> float:
     """The largest finite magnitude among ``values`` (real or complex), 0 where none is finite."""
     magnitudes = np.abs(np.asarray(values, dtype=complex if np.iscomplexobj(values) else float))
@@ -47,4 +56,5 @@ def rounded_up(value: float, digits: int = 2) -> float:
     return float(f"{math.ceil(value / unit) * unit:.{digits}g}")
 
 
-__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor", "rounded_up"]
+__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor", "rounded_up",
+           "written_as_nought"]

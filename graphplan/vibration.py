@@ -48,7 +48,7 @@ from .rotor_lengths import (
     LengthsInMillimetres,
     lightest_rotor,
 )
-from .rounding import ROUNDING_NOISE
+from .rounding import ROUNDING_NOISE, written_as_nought
 from .table_keys import keys_of_other_tables
 from .units import RPM, STANDARD_GRAVITY, motor_speed_in_rpm, percentage_question, rpm_question
 
@@ -894,17 +894,17 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
     # The note writes a quantity below the rounding noise as 0, as no machine's is so small: a machine of 1e-14 kg
     # ended the run in ZeroDivisionError as the note worked out ωn = √(k/M) with M written 0.
     if mass <= ROUNDING_NOISE:
-        raise SceneError(table.where("mass"), f"must be above {ROUNDING_NOISE:g} kg, the size the note writes as "
-                         "0: no machine on mounts is so light (the mass is in kg)", mass, hint="; a slip of the exponent?")
+        raise SceneError(table.where("mass"), f"{written_as_nought('kg')}: no machine on mounts is so light (the mass "
+                         "is in kg)", mass, hint="; a slip of the exponent?")
     unbalance, eccentricity = _unbalance(table, mass)
     shaft = _shaft(table)
     stiffness = table.number("stiffness", positive=True) if shaft is None else shaft.stiffness
     if stiffness <= ROUNDING_NOISE:
         # A shaft's k = 48·E·I/L³ (or its support's) of a modulus typed some powers of ten short comes out so small.
         key, typed = ("stiffness", stiffness) if shaft is None else ("shaft", table.data["shaft"])
-        raise SceneError(table.where(key), f"gives a stiffness of {stiffness:.3g} N/m, not above {ROUNDING_NOISE:g} "
-                         "N/m, the size the note writes as 0: no mount or shaft is so soft (k is in N/m, a shaft's "
-                         "modulus in Pa)", typed, hint="; a slip of the exponent?")
+        raise SceneError(table.where(key), f"{written_as_nought('N/m', f'gives a stiffness of {stiffness:.3g} N/m')}: "
+                         "no mount or shaft is so soft (k is in N/m, a shaft's modulus in Pa)", typed,
+                         hint="; a slip of the exponent?")
     given = table.has("omega") or table.has("rpm")
     omega = table.speed(positive=True) if driver_speed is None else table.speed(driver_speed, positive=True)
     zeta = _damping(table, stiffness, mass)

@@ -37,6 +37,10 @@ def _refused(capsys, code: int) -> str:
 # The flywheel starter's press: a 4 kW induction motor through 14.4 starts it from rest and settles at about 100 rpm.
 MOTOR_LINE = 'motor = { kind = "kloss"'
 
+# The one wording every key's refusal of a value the note and the drawings would write as 0 gives, in the key's unit:
+# render/numerals.number writes a value below 1e-10 as 0.
+WRITTEN_AS_NOUGHT = "must be above 1e-10 {unit}, the size the note and the drawings write as 0"
+
 
 @pytest.mark.parametrize("tolerance", [0.5, 1e6])
 def test_a_steady_tolerance_that_takes_the_start_up_for_steady_is_refused_at_its_key(tmp_path, capsys,
@@ -239,12 +243,14 @@ def test_an_unbalance_that_would_put_the_whole_machine_beyond_any_rotor_is_warne
     assert f"требует сместить от оси всю машину, {mass:g} кг, на {unbalance / mass:g} м" in note
 
 
-@pytest.mark.parametrize(("typed", "given", "key"), [
-    ("mass          = 100.0 ", "mass          = 1e-14 ", "vibration.mass"),
-    ("stiffness     = 1.0e5 ", "shaft = { modulus = 1e-14, diameter = 0.03, length = 0.8 } ", "vibration.shaft"),
-], ids=["mass", "shaft"])
+@pytest.mark.parametrize(("typed", "given", "key", "unit"), [
+    ("mass          = 100.0 ", "mass          = 1e-14 ", "vibration.mass", "kg"),
+    ("stiffness     = 1.0e5 ", "shaft = { modulus = 1e-14, diameter = 0.03, length = 0.8 } ", "vibration.shaft",
+     "N/m"),
+    ("stiffness     = 1.0e5 ", "stiffness     = 1e-12 ", "vibration.stiffness", "N/m"),
+], ids=["mass", "shaft", "stiffness"])
 def test_a_mass_or_stiffness_the_note_writes_as_nought_is_refused_at_its_key(tmp_path, capsys, typed, given,
-                                                                             key) -> None:
+                                                                             key, unit) -> None:
     """The note writes a quantity below 1e-10 as 0, as no machine's is so small: a machine of 1e-14 kg on its mounts
     ended the run in ZeroDivisionError as the note worked out ωn = √(k/M) with M written 0, and a shaft of modulus
     1e-14 Pa, k = 48·E·I/L³ some 1e-20 N/m, in ValueError ("stiffness: must be > 0"), after `check` had passed both.
@@ -256,7 +262,7 @@ def test_a_mass_or_stiffness_the_note_writes_as_nought_is_refused_at_its_key(tmp
     out = tmp_path / "out"
     told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
     assert told.startswith(f"graphplan: error: {key}: "), told
-    assert "1e-10" in told, told
+    assert WRITTEN_AS_NOUGHT.format(unit=unit) in told, told
     assert not out.exists()
     assert _refused(capsys, main(["check", str(scene)])) == told
 
@@ -355,12 +361,13 @@ def test_a_clutch_stronger_than_the_resistance_behind_a_runaway_motor_is_still_r
     assert told.startswith("graphplan: error: dynamics.motor: ") and "speeds up without end" in told, told
 
 
-@pytest.mark.parametrize(("given", "key"), [
-    ("mass = 1e-14, radius = 0.05", "balancing.masses[0].mass"),
-    ("mass = 18.0, radius = 1e-14", "balancing.masses[0].radius"),
-    ("mass = 1e-6, radius = 1e-5", "balancing.masses[0]"),
+@pytest.mark.parametrize(("given", "key", "unit"), [
+    ("mass = 1e-14, radius = 0.05", "balancing.masses[0].mass", "kg"),
+    ("mass = 18.0, radius = 1e-14", "balancing.masses[0].radius", "m"),
+    ("mass = 1e-6, radius = 1e-5", "balancing.masses[0]", "kg·m"),
 ], ids=["mass", "radius", "product"])
-def test_a_rotating_mass_the_note_writes_as_nought_is_refused_at_its_key(tmp_path, capsys, given, key) -> None:
+def test_a_rotating_mass_the_note_writes_as_nought_is_refused_at_its_key(tmp_path, capsys, given, key,
+                                                                       unit) -> None:
     """A mass of 1e-14 kg on the rotor starter ran, and the note's tables wrote its m = 0 and m·r = 0 beside the
     others, as though it were not there: the note writes a number below 1e-10 as 0, as a vibration's mass is refused
     for.  A mass, a radius off the axis or their product m·r so small is refused at its key by run and check alike,
@@ -377,7 +384,7 @@ def test_a_rotating_mass_the_note_writes_as_nought_is_refused_at_its_key(tmp_pat
     out = tmp_path / "out"
     told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
     assert told.startswith(f"graphplan: error: {key}: "), told
-    assert "1e-10" in told and "writes as 0" in told, told
+    assert WRITTEN_AS_NOUGHT.format(unit=unit) in told, told
     assert not out.exists()
     assert _refused(capsys, main(["check", str(scene)])) == told
     assert main(["check", str(_scene(tmp_path, text.replace(typed, "mass = 18.0, radius = 0.0")))]) == 0
@@ -455,7 +462,7 @@ def test_a_plane_named_as_a_symbol_is_refused_at_its_key(tmp_path, capsys, names
 
 
 @pytest.mark.parametrize(("radius", "said"), [
-    (1e-14, "must be above 1e-10 m, the size the note writes as 0"),
+    (1e-14, WRITTEN_AS_NOUGHT.format(unit="m")),
     (1e-9, "puts a correction mass of "),
     (0.005, "puts a correction mass of "),
 ], ids=["written-as-nought", "a-billion-kg", "ten-of-the-masses"])
