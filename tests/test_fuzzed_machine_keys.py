@@ -34,6 +34,20 @@ def _refused(capsys, code: int) -> str:
     return err.strip().splitlines()[-1]
 
 
+def _refused_by_run_and_check(tmp_path: Path, capsys, scene: Path, key: str, *said: str, opening: str = "") -> str:
+    """The one error line with which `run` refuses ``scene`` at ``key``, its problem opening with ``opening`` and
+    saying each of ``said``, with no traceback and no output folder written; `check` refuses it with the same line."""
+    capsys.readouterr()
+    out = tmp_path / "out"
+    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
+    assert told.startswith(f"graphplan: error: {key}: {opening}"), told
+    for words in said:
+        assert words in told, told
+    assert not out.exists()
+    assert _refused(capsys, main(["check", str(scene)])) == told
+    return told
+
+
 # The flywheel starter's press: a 4 kW induction motor through 14.4 starts it from rest and settles at about 100 rpm.
 MOTOR_LINE = 'motor = { kind = "kloss"'
 
@@ -52,12 +66,7 @@ def test_a_steady_tolerance_that_takes_the_start_up_for_steady_is_refused_at_its
     text = _starter(tmp_path, "flywheel")
     assert text.count(MOTOR_LINE) == 1
     scene = _scene(tmp_path, text.replace(MOTOR_LINE, f"steady_tolerance = {tolerance!r}\n{MOTOR_LINE}"))
-    capsys.readouterr()
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith("graphplan: error: dynamics.steady_tolerance: must be at most 0.001"), told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    _refused_by_run_and_check(tmp_path, capsys, scene, "dynamics.steady_tolerance", opening="must be at most 0.001")
 
 
 def test_the_loosest_steady_tolerance_finds_the_steady_state_after_the_start_up(tmp_path, capsys) -> None:
@@ -100,12 +109,7 @@ def test_a_clutch_or_brake_that_never_acts_within_the_run_is_refused_at_its_key(
     though it never acted.  Each is refused at its key, as a motor switched off past the run's end is, and nothing
     is written."""
     scene = _scene(tmp_path, MACHINE + given)
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith(f"graphplan: error: {key}: "), told
-    assert said in told, told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    _refused_by_run_and_check(tmp_path, capsys, scene, key, said)
 
 
 def test_a_clutch_engaged_later_too_weak_to_move_the_machine_is_told_as_a_stall(tmp_path, capsys) -> None:
@@ -139,11 +143,7 @@ def test_a_delta_no_machine_runs_at_is_refused_at_its_key(tmp_path, capsys, delt
     text = _starter(tmp_path, "flywheel")
     assert text.count("delta = 0.05 ") == 1
     scene = _scene(tmp_path, text.replace("delta = 0.05 ", f"delta = {delta!r} "))
-    capsys.readouterr()
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith("graphplan: error: dynamics.delta: must be at least 0.0001"), told
-    assert not out.exists()
+    _refused_by_run_and_check(tmp_path, capsys, scene, "dynamics.delta", opening="must be at least 0.0001")
 
 
 def test_the_smallest_delta_taken_sizes_the_flywheel_in_proportion(tmp_path, capsys) -> None:
@@ -258,13 +258,7 @@ def test_a_mass_or_stiffness_the_note_writes_as_nought_is_refused_at_its_key(tmp
     text = _starter(tmp_path, "rotor")
     assert text.count(typed) == 1
     scene = _scene(tmp_path, text.replace(typed, given))
-    capsys.readouterr()
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith(f"graphplan: error: {key}: "), told
-    assert WRITTEN_AS_NOUGHT.format(unit=unit) in told, told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    _refused_by_run_and_check(tmp_path, capsys, scene, key, WRITTEN_AS_NOUGHT.format(unit=unit))
 
 
 @pytest.mark.parametrize("inertia", [1e-14, 1e-10])
@@ -279,15 +273,11 @@ def test_a_machine_next_to_weightless_behind_its_clutch_is_refused_at_its_inerti
         'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }',
         'motor = { kind = "linear", stall_torque = 150.0, no_load_rpm = 120, rotor_inertia = 1.0 }')
         + f"clutch = {{ torque = {torque}, engage_at = 0.5 }}\n")
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith("graphplan: error: dynamics.inertia: "), told
+    told = _refused_by_run_and_check(tmp_path, capsys, scene, "dynamics.inertia")
     omega = float(told.split("up to the running speed, ")[1].split(" rad/s")[0])
     least = float(told.split("at least ")[1].split(" kg·m²")[0])
     assert least == pytest.approx(1e-4 * (2 * math.pi / omega) * torque / omega, rel=1e-2)
     assert inertia < least
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
 
 
 def test_a_machine_as_light_as_the_bound_behind_its_clutch_runs(tmp_path, capsys) -> None:
@@ -311,14 +301,10 @@ def test_a_constant_torque_that_runs_the_machine_past_any_shaft_speed_is_refused
     J·ω/(Md − Mr), some 3 ms.  Refused at the torque, saying when, by run and check alike, and nothing is written."""
     torque, resisting, inertia = 1e7, 50.0, 3.0
     scene = _scene(tmp_path, MACHINE.replace("torque = 150.0", f"torque = {torque!r}") + "duration = 2.0\n")
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith("graphplan: error: dynamics.motor.torque: "), told
-    assert "past 100000 rpm" in told and "within dynamics.duration = 2 s" in told, told
+    told = _refused_by_run_and_check(tmp_path, capsys, scene, "dynamics.motor.torque", "past 100000 rpm",
+                                     "within dynamics.duration = 2 s")
     seconds = float(told.split("the fastest a machine's shaft turns, ")[1].split(" s into the run")[0])
     assert seconds == pytest.approx(inertia * 100_000 * 2 * math.pi / 60 / (torque - resisting), rel=1e-2)
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
 
 
 def test_a_duration_too_long_for_a_usual_torque_is_still_refused_at_the_duration(tmp_path, capsys) -> None:
@@ -380,13 +366,7 @@ def test_a_rotating_mass_the_note_writes_as_nought_is_refused_at_its_key(tmp_pat
     mass, radius = (float(part.split("= ")[1]) for part in given.split(", "))
     assert "0" in {number(mass), number(radius), number(mass * radius)}
     scene = _scene(tmp_path, text.replace(typed, given))
-    capsys.readouterr()
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith(f"graphplan: error: {key}: "), told
-    assert WRITTEN_AS_NOUGHT.format(unit=unit) in told, told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    _refused_by_run_and_check(tmp_path, capsys, scene, key, WRITTEN_AS_NOUGHT.format(unit=unit))
     assert main(["check", str(_scene(tmp_path, text.replace(typed, "mass = 18.0, radius = 0.0")))]) == 0
 
 
@@ -409,13 +389,7 @@ def test_a_name_too_long_to_letter_a_polygon_is_refused_at_its_key(tmp_path, cap
     assert text.count(typed) == 1 and text.count(mass) == 1
     named = text.replace(mass, '{ name = "' + "n" * (11 if key.startswith("balancing.masses") else 10) + '", mass = 14.0,')
     scene = _scene(tmp_path, named.replace(typed, given))
-    capsys.readouterr()
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith(f"graphplan: error: {key}: "), told
-    assert "at most 10 characters" in told, told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    _refused_by_run_and_check(tmp_path, capsys, scene, key, "at most 10 characters")
     assert text_width("((m·r)impeller_a)drive_ends", lettering.NAME) < POLYGON_FIELD_MM
     fitting = text.replace(mass, '{ name = "impeller_a", mass = 14.0,').replace(
         typed, 'plane_names = ["drive_ends", "R"]\n' + typed)
@@ -486,12 +460,7 @@ def test_a_correction_radius_that_gives_no_rotor_s_correction_mass_is_refused_at
                 for mass, mass_radius, angle, plane in masses)
     heaviest = 7850.0 * math.pi * (2 * 0.06) ** 2 * (2 * 0.22)
     scene = _scene(tmp_path, text.replace(typed, f"correction_radius = {radius!r} "))
-    capsys.readouterr()
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith(f"graphplan: error: balancing.correction_radius: {said}"), told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    told = _refused_by_run_and_check(tmp_path, capsys, scene, "balancing.correction_radius", opening=said)
     if "correction mass" in said:
         assert f"{abs(share) / radius:.4g} kg in plane L" in told, told
         least = float(told.split("give a correction radius of at least ")[1].split(" m")[0])
@@ -516,12 +485,8 @@ def test_a_correction_radius_too_small_for_a_heavy_eccentric_rotor_is_refused_at
     plane.  Nothing is written."""
     scene = _scene(tmp_path, f'[scene]\ntitle = "eccentric"\n[balancing]\nmasses = [ {masses} ]\n{planes}'
                              "correction_radius = 1e-9\n")
-    out = tmp_path / "out"
-    told = _refused(capsys, main(["run", str(scene), "--out", str(out)]))
-    assert told.startswith("graphplan: error: balancing.correction_radius: puts a correction mass of "), told
-    assert f"{per_plane / 1e-9:.4g} kg in plane " in told, told
-    assert not out.exists()
-    assert _refused(capsys, main(["check", str(scene)])) == told
+    told = _refused_by_run_and_check(tmp_path, capsys, scene, "balancing.correction_radius",
+                                     f"{per_plane / 1e-9:.4g} kg in plane ", opening="puts a correction mass of ")
     rotor_masses = 500.0 * masses.count("mass = ")
     least = float(told.split("give a correction radius of at least ")[1].split(" m")[0])
     assert per_plane / (2 ** 3 * rotor_masses) <= least == pytest.approx(per_plane / (2 ** 3 * rotor_masses), rel=0.1)
