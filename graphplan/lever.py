@@ -20,11 +20,16 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .forces import TERM_ROUNDING, Load
+from .forces import TERM_ROUNDING, Load, negligible
 from .geometry import perpendicular_foot
 from .kinematics import cross
 from .mechanism import Mechanism
 from .plans import Plan
+
+# The balancing force on the lever, at the image of the driver's joint, and its arm's name: keys, which a locale spells
+# (Fу and hу in Russian) with load_symbol.
+BALANCING_FORCE = "Fb"
+BALANCING_ARM = "hb"
 
 
 @dataclass(frozen=True)
@@ -62,6 +67,54 @@ class Lever:
         (the balancing force's among them), however short its arm on the drawing."""
         largest = max([abs(other.moment) for other in self.terms] + [abs(sum(other.moment for other in self.terms))])
         return abs(term.moment) > TERM_ROUNDING * largest
+
+    def standing(self, velocity: Plan) -> frozenset[str]:
+        """The names of the terms that stand in ΣMp as the lever of ``velocity`` is drawn and worked: those that stand
+        (:meth:`stands`) and are more than the rounding beside the loads' powers at the plan's fastest point.
+
+        A term's power is rounding where its point stands still or moves square to it: at a Scotch yoke's dead
+        centre every one is, and the lever wrote h1 = 0.000000000000006661 mm and Mb = −0.00000000000001040 N·m
+        where the polygons find Mb = 0.
+        """
+        reach = (max((abs(value) for value in velocity.points.values()), default=0.0)
+                 * max((abs(term.force) for term in self.terms), default=0.0))
+        return frozenset(term.name for term in self.terms
+                         if self.stands(term) and abs(term.moment) > TERM_ROUNDING * reach)
+
+    @property
+    def forces(self) -> tuple[tuple[str, str, complex, complex], ...]:
+        """Each force on the lever as (name, image, force, shift in m/s on the plan before it is turned), the
+        balancing force Fb last: the loads' forces, a block's moment (no force) and a nought force left out."""
+        loads = tuple((term.name, term.image, term.force, term.shift) for term in self.terms
+                      if term.image and term.force != 0)
+        return (*loads, (BALANCING_FORCE, self.balancing_image, self.balancing_force, 0j))
+
+    def arm_names(self, velocity: Plan, drawn_at: float, precision: float) -> dict[str, str]:
+        """The name of the arm of each force the lever of ``velocity`` names one for, drawn at μV ``drawn_at``
+        ((m/s)/mm) to the drafting ``precision`` (mm): h1, h2, … in the order of :attr:`forces`, ``hb`` the balancing
+        force's, one name for the forces whose lines are one line (:func:`shared_arms`), ``hb`` where Fb is among
+        them.  ``hb`` is a key: the caller spells it as its locale writes it (``load_symbol``: hу in Russian).
+
+        Named are Fb and the forces whose terms stand in ΣMp (:meth:`standing`) and that are no rounding error beside
+        the others (:func:`~graphplan.forces.negligible`: the lever draws no arrow for one).  The force sheet letters
+        the lever's arms by these names and the note writes each load's arm with them, so that the note's h2 is the
+        sheet's; the scale is the one the lever is drawn at, since the drafting precision there decides which lines
+        are one.
+        """
+        forces = self.forces
+        standing = self.standing(velocity) | {BALANCING_FORCE}
+        named = [force for force in forces if force[0] in standing
+                 and not negligible(force[2], [other for _, _, other, _ in forces])]
+        names: dict[str, str] = {}
+        count = 0
+        for gathered in shared_arms(velocity, named, precision * drawn_at):
+            if BALANCING_FORCE in gathered:
+                arm = BALANCING_ARM
+            else:
+                count += 1
+                arm = f"h{count}"
+            names.update(dict.fromkeys(gathered, arm))
+        return names
 
     def difference_percent(self, polygons: float) -> float:
         """(lever − polygons)/polygons · 100: how far the two methods part."""
@@ -174,4 +227,4 @@ def _couple(load: Load, positions: dict[str, complex], velocity: Plan) -> list[L
             _term(f"{load.name}″", first_letter, -force, velocity.points[first_letter])]
 
 
-__all__ = ["Lever", "LeverTerm", "arm_foot", "lever", "shared_arms", "turned"]
+__all__ = ["BALANCING_ARM", "BALANCING_FORCE", "Lever", "LeverTerm", "arm_foot", "lever", "shared_arms", "turned"]

@@ -18,9 +18,9 @@ from shapely.geometry import LineString, MultiPoint
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 
-from ..forces import TERM_ROUNDING, negligible
+from ..forces import negligible
 from ..geometry import perpendicular_foot
-from ..lever import Lever, LeverTerm, shared_arms, turned
+from ..lever import Lever, LeverTerm, turned
 from ..locale import load_symbol
 from ..memo import OwnedMemo
 from ..plans import Plan
@@ -241,18 +241,14 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     arm_lengths: dict[str, float] = {}  # on the drawing, mm
     by_arm: dict[str, list[tuple[str, str]]] = {}  # each arm's loads in ΣMp, as (sign, name), in the order drawn
     moments = {term.name: term.moment for term in lever.terms}
-    # Beside the loads' powers at the plan's fastest point, a term's is rounding where its point stands still or moves
-    # square to it: at a Scotch yoke's dead centre every one is, and the lever wrote h1 = 0.000000000000006661 mm
-    # and Mb = −0.00000000000001040 N·m where the polygons find Mb = 0.
-    reach = (max((abs(value) for value in velocity.points.values()), default=0.0)
-             * max((abs(term.force) for term in lever.terms), default=0.0))
+    standing = lever.standing(velocity) | {"Fb"}
 
     def stands(term: LeverTerm) -> bool:
-        return lever.stands(term) and abs(term.moment) > TERM_ROUNDING * reach
+        return term.name in standing
 
-    standing = {term.name for term in lever.terms if stands(term)} | {"Fb"}
-    arm_of = _arm_names(sheet, lever, [(name, image, force) for name, image, force, _, _ in named if name in standing
-                                       and not negligible(force, [other for _, _, other, _, _ in named])])
+    # One numbering of the arms, the note's too: at the scale drawn at, whose drafting precision decides which are one.
+    arm_of = {name: load_symbol(arm, text) for name, arm in
+              lever.arm_names(velocity, drawn_at, sheet.mechanism.scene.drawing.drafting_precision).items()}
     balancing = lever.balancing if len(standing) > 1 else 0.0
     undrawn: list[str] = []  # arms in the equation too short to draw, given under it
     load_points: dict[str, str] = {}  # each named load's point on the lever, where its arrow stands
@@ -401,26 +397,6 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                              Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
                              Layer("lever-labels", labels.texts)], (*caption, *under),
                    run_on=short_run_on(short, apart, text, after=len(under)))
-
-
-def _arm_names(sheet: ForceSheet, lever: Lever, loads: Sequence[tuple[str, str, complex]]) -> dict[str, str]:
-    """The name of each standing load's arm on the lever (``loads``: name, image, force, in the order they are drawn,
-    the balancing force Fb last): h1, h2, … in order, hb the balancing force's, one name for the loads whose lines
-    are one line within the drafting precision (:func:`~graphplan.lever.shared_arms`), hb where Fb is among them;
-    hb as the locale writes it (hу in Russian), the others' h1, h2 alike in every locale."""
-    shifts = {term.name: term.shift for term in lever.terms}
-    tolerance = sheet.mechanism.scene.drawing.drafting_precision * sheet.lever_drawn_scale
-    names: dict[str, str] = {}
-    count = 0
-    for gathered in shared_arms(sheet.velocity, [(name, image, force, shifts.get(name, 0j))
-                                                 for name, image, force in loads], tolerance):
-        if "Fb" in gathered:
-            arm = load_symbol("hb", sheet.text)
-        else:
-            count += 1
-            arm = f"h{count}"
-        names.update(dict.fromkeys(gathered, arm))
-    return names
 
 
 # A load's name standing this much (mm) nearer another load's free end than its own names that load: the friction
