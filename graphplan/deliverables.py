@@ -56,7 +56,8 @@ class Drawing:
     stem: str
     layers: list[Layer]
     page: tuple[float, float] | None = None
-    # A force sheet's lever μV where it is drawn at another than the plan's enlarged one (on a small sheet).
+    # μV a force sheet's lever is drawn at (a small sheet may draw it smaller than the plan's enlarged one): the
+    # note works the lever, and names its arms, at the scale of the sheet beside it.
     lever_scale: float | None = None
     # The headings of the diagrams a part of a drawing cut for the note shows, which its caption names: "Figure 6
     # (part 2 of 3)" alone left the reader to find which of the dynamics' diagrams each part holds.
@@ -361,19 +362,19 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             found += _plan_note_parts(plan, shown, pieces, layers)
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
             laid_out = _drawn_alone(panels, f"forces-{plan.number}") if "lever" in pieces else None
-            layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
-                else _force_sheet_layers(analysis, plan, pieces)
-            found.append(Drawing(f"forces_{plan.number}", layers,
-                                 lever_scale=laid_out.lever_scale if laid_out else None,
+            layers, scales, lever_scale = (list(laid_out.layers), _scales_of(laid_out), laid_out.lever_scale) \
+                if laid_out else _force_sheet_layers(analysis, plan, pieces)
+            found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=lever_scale,
                                  larger_polygons=_record_drawings(analysis, plan)))
             found += _note_parts(f"forces_{plan.number}", layers, pieces, scales)
             rubbing = plan.with_friction
             # The sheet with friction comes with the sheet it repeats: with `lever` its lever with friction on it.
             if rubbing is not None and not rubbing.locked:
                 laid_out = _drawn_alone(panels, f"forces-friction-{plan.number}") if "lever" in pieces else None
-                layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
+                layers, scales, lever_scale = \
+                    (list(laid_out.layers), _scales_of(laid_out), laid_out.lever_scale) if laid_out \
                     else _force_sheet_layers(analysis, plan, pieces, True)
-                found.append(Drawing(f"forces_friction_{plan.number}", layers,
+                found.append(Drawing(f"forces_friction_{plan.number}", layers, lever_scale=lever_scale,
                                      larger_polygons=_record_drawings(analysis, plan, True)))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces, scales)
     return found
@@ -483,10 +484,11 @@ def _record_drawings(analysis: Analysis, plan, with_friction: bool = False) -> t
     return ((plan.number, SheetPolygons(None, {}, arrows=drawn)),) if drawn else ()
 
 
-def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],
-                        with_friction: bool = False) -> tuple[list, tuple[tuple[tuple[str, str], ...], str]]:
+def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_friction: bool = False
+                        ) -> tuple[list, tuple[tuple[tuple[str, str], ...], str], float | None]:
     """The force sheet of a plan position, its lever left off unless the run asks for it, with the scales its
-    heading names (:attr:`~graphplan.render.force_rows.Heading.scales`) and the comma that sets them apart."""
+    heading names (:attr:`~graphplan.render.force_rows.Heading.scales`) and the comma that sets them apart, and μV
+    its lever is drawn at (None without one): the note works the lever, and names its arms, at the sheet's scale."""
     from .render import drawings as draw
     from .render import forces as force_layout
 
@@ -494,7 +496,8 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],
     if "lever" not in pieces:
         sheet = dataclasses.replace(sheet, lever=None)
     rows = force_layout.rows(sheet)
-    return rows.arranged(rows.in_columns(1)).layers, (rows.heading.scales, rows.heading.comma)
+    return (rows.arranged(rows.in_columns(1)).layers, (rows.heading.scales, rows.heading.comma),
+            sheet.lever_drawn_scale if sheet.lever is not None else None)
 
 
 def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larger | None = None):

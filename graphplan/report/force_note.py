@@ -577,6 +577,9 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
         # As the force sheet beside the note draws it: a small sheet may draw it smaller than enlarged.
         drawn_at = (note.lever_scales.get(f"forces_{plan.number}.svg") or enlarged_lever_scale(velocity, lever)
                     or velocity.scale)
+        # Each arm by the name the sheet's lever letters it (h1, h2, hb), a shared arm's in each of its loads' rows; a
+        # load the lever names no arm for (one with no moment, at the pole) keeps its length alone.
+        arm_names = lever.arm_names(velocity, drawn_at, note.mechanism.scene.drawing.drafting_precision)
         rows = []
         total = 0.0
         largest = max((abs(term.moment) for term in lever.terms), default=0.0)
@@ -593,6 +596,8 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
                 point += f" + ω{link}·{load_symbol(f'hu{link}', text)}"
             # The lever's sheet leaves out an arm shorter than a plan draws, as the plans leave out a vector.
             arm = note.on_plan(term.arm / drawn_at) if term.image else "—"
+            if term.name in arm_names:
+                arm = f"{load_symbol(arm_names[term.name], text)} = {arm}"
             force = note.n(abs(term.force)) if term.image else "—"
             rows.append([load_symbol(term.name, text), point, force, arm, note.n(moment_mm)])
         note.para(note.t("note_lever_intro", sign=note.text["note_lever_sign"]))

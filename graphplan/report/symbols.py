@@ -31,7 +31,7 @@ _ROTOR = f"\\d{{1,3}}|[{CAPITALS}][A-Za-z0-9]{{0,2}}|[bi]"
 # Every character a symbol below begins with: asked first, so that the shapes are tried only where one may begin (the
 # note's and the tables' texts were scanned nine times slower, every shape tried at every character).  A shape added
 # with another first character adds it here (tests/test_run_speed_paths.py holds the symbols found to the shapes').
-FIRST_CHARACTERS = "VaslωεψμRFMGJmIpnPφXfρΔAWv(zr"
+FIRST_CHARACTERS = "VaslωεψμRFMGJmIpnPφXfρΔAWv(zrh"
 
 # base, index, component: the symbols of the plan method and of the force analysis.
 SYMBOL = re.compile(
@@ -51,6 +51,8 @@ SYMBOL = re.compile(
     r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[иу]\d*|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
     r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
+    # The arm of the balancing force on Zhukovsky's lever (hb, in Russian hу), as the lever's drawing letters it.
+    r"|(?P<base34>h)(?P<index34>[bу])"
     # ΣMp: Zhukovsky's lever's moments about its pole p.
     rf"|(?<=Σ)(?P<base8>M)(?P<index8>{_POINTS}|p)"
     # A group's class with its order in the structure formula (II2(3,4)), which the textbooks set as II₂.

@@ -1,0 +1,155 @@
+"""The note names the arms of Zhukovsky's lever as the force sheet's lever letters them.
+
+The lever drawing letters each arm h1, h2, …, hb (hу in Russian), one name for the loads whose lines are one line,
+and writes its ΣMp with those names (``−G3·h1 + (Mu4′ − M4′)·h7 + Fb·hb``); the note's table of the lever's moments
+gave each load's arm under a bare "h, mm", so that a reader checking it against the sheet could not tell which arm
+is which.  Read back from both as written, for every fixture with a lever and the starters that add the sliding and
+class III groups and the shaper's friction, in every position: each load the sheet's ΣMp names an arm for stands in
+the note's table with that arm, and no other load there carries a name (same names, same loads under each name).
+The note's length of a named arm is the length of its perpendicular drawn on the sheet, measured from the SVG: the
+note works the lever at the scale the sheet drew it at, whose drafting precision decides which lines are one.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+from lever_equation import unfactored
+
+import graphplan
+from graphplan.locale import load_symbol, strings
+from graphplan.render.primitives import svg_id
+from graphplan.run import run
+from graphplan.starters import starter
+
+SVG = "{http://www.w3.org/2000/svg}"
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+# A term of ΣMp multiplied out: a sign, a load's name, its arm (h3, hb, hу); a block's M·ω/μV has no arm.
+SHEET_TERM = re.compile(r"[+−] ([^\s·]+)·(h[^\s·()=]+)")
+# A length cell of the note's table, with the arm's name before it where the lever names one: ``h2 = 49.19`` (in
+# Russian ``h2 = 49,19``).
+NOTE_ARM = re.compile(r"^(?:(?P<arm>h\S*) = )?(?P<length>\d+(?:[.,]\d+)?)")
+# The moves of a path as the SVG writes them: ``M25.002,530.163 L28.172,509.427``.
+PATH_POINT = re.compile(r"[ML](-?[\d.]+),(-?[\d.]+)")
+
+SCENES = [("fixture", path.stem) for path in sorted(FIXTURES.glob("*.toml"))]
+STARTERS = [("starter", kind) for kind in ("shaper", "slotted-lever", "triad")]
+
+
+def scene_path(tmp_path: Path, source: str, name: str) -> Path:
+    if source == "fixture":
+        return FIXTURES / f"{name}.toml"
+    path = tmp_path / f"{name}.toml"
+    path.write_text(starter(name, "en"), encoding="utf-8")
+    return path
+
+
+def sheet_arms(svg: Path) -> tuple[dict[str, str], set[str], dict[str, float]]:
+    """The arm ΣMp on the sheet's lever names for each load (Fb's among them), the arm names lettered on the lever or
+    given under it, and the length (mm) of each arm drawn from the pole, by the id of its load's layer."""
+    root = ElementTree.parse(svg).getroot()
+    layers = {layer.get("id"): layer for layer in root.iter(f"{SVG}g")}
+    caption = " ".join("".join(text.itertext()) for text in layers["lever-caption"].findall(f"{SVG}text"))
+    equation = re.search(r"ΣMp: (.*?) = 0", caption)
+    assert equation, f"{svg.name}: no ΣMp under the lever: {caption}"
+    # Every term signed and its sign set apart, as the equation's later terms are: −G3·h1 leads it as − G3·h1.
+    terms = equation.group(1)
+    terms = f"{terms[0]} {terms[1:]}" if terms[0] in "+−" else f"+ {terms}"
+    named = dict(SHEET_TERM.findall(unfactored(terms)))
+    lettered = {"".join(text.itertext()) for text in layers["lever-labels"].findall(f"{SVG}text")}
+    lettered = {name for name in lettered if re.fullmatch(r"h\w+", name)}
+    lettered |= set(re.findall(r"(h\w+) = [\d.]+", caption))  # an arm too short or too crowded to letter on it
+    (pole,) = [complex(float(dot.get("cx")), float(dot.get("cy")))
+               for dot in layers["lever-points"].findall(f"{SVG}circle") if dot.get("r") == "0.7"]
+    lengths = {}
+    for layer_id, layer in layers.items():
+        if not (layer_id or "").startswith("lever-arm-"):
+            continue
+        for path in layer.findall(f"{SVG}path"):  # the arm from the pole; a line run on to its foot starts elsewhere
+            start, end = [complex(float(x), float(y)) for x, y in PATH_POINT.findall(path.get("d"))][:2]
+            if abs(start - pole) <= 0.002:
+                lengths[layer_id] = abs(end - start)
+    return named, lettered, lengths
+
+
+def note_arms(markdown: str, locale: str) -> dict[int, list[tuple[str, str | None, float]]]:
+    """By position, each row of the note's table of the lever's moments: the load, its arm's name (None where the
+    row names none) and its length (mm)."""
+    title = re.escape(strings(locale)["note_lever_table"]).replace(re.escape("{number}"), r"(\d+)") + r"$"
+    found: dict[int, list[tuple[str, str | None, float]]] = {}
+    number = None
+    for line in markdown.splitlines():
+        heading = re.search(title, line)
+        if heading:
+            number = int(heading.group(1))
+            found[number] = []
+        elif number is not None and line.startswith("| ") and not line.startswith("|---"):
+            cells = [cell.strip() for cell in line.strip("|").split("|")]
+            if cells[0] == strings(locale)["column_force"]:
+                continue
+            length = NOTE_ARM.match(cells[3])
+            if length:  # a block's moment has no arm ("—")
+                found[number].append((cells[0], length["arm"], float(length["length"].replace(",", "."))))
+        elif number is not None and found[number] and not line.startswith("|"):
+            number = None
+    return found
+
+
+def check_arms_agree(folder: Path, made, locale: str) -> None:
+    text = strings(locale)
+    note = note_arms((folder / "note.md").read_text(encoding="utf-8"), locale)
+    checked = 0
+    for plan in made.analysis.plans:
+        if plan.lever is None:
+            continue
+        latin = {load_symbol(term.name, text): term.name for term in plan.lever.terms}
+        named, lettered, lengths = sheet_arms(folder / f"forces_{plan.number}.svg")
+        # The note tables the loads, Fb's arm worked apart from them; the lever letters each arm ΣMp names, no other.
+        assert named.pop(load_symbol("Fb", text)) == load_symbol("hb", text)
+        assert lettered == {*named.values(), load_symbol("hb", text)}, f"position {plan.number}: {lettered}, {named}"
+        rows = note[plan.number]
+        written = {name: arm for name, arm, _ in rows if arm is not None}
+        assert written == named, (f"position {plan.number}: the sheet's lever names the arms {named}, "
+                                  f"the note's table {written}")
+        # A shared arm's length is written once per row and drawn once, from its first load's point.
+        for arm in set(named.values()):
+            loads = [(name, length) for name, written_arm, length in rows if written_arm == arm]
+            drawn = [lengths[key] for name, _ in loads if (key := svg_id("lever-arm", latin[name])) in lengths]
+            assert len({length for _, length in loads}) == 1, f"position {plan.number}: {arm} of {loads}"
+            if drawn:
+                assert abs(drawn[0] - loads[0][1]) <= 0.01, (f"position {plan.number}: {arm} = {loads[0][1]} mm "
+                                                             f"in the note, {drawn[0]:.3f} mm on the sheet")
+        checked += len(named)
+    assert checked > 0, "no lever names an arm"
+
+
+@pytest.mark.parametrize(("source", "name"), SCENES + STARTERS, ids=[name for _, name in SCENES + STARTERS])
+def test_the_note_names_each_lever_arm_as_the_force_sheet_letters_it(tmp_path, source, name):
+    scene = graphplan.load(scene_path(tmp_path, source, name))
+    made = run(scene, tmp_path / "out", only=["forces", "lever", "note"])
+    check_arms_agree(tmp_path / "out", made, scene.locale)
+
+
+# hb is hу in Russian, and the loads' names localised (Fи3): the ratchet's own note is Russian, so it is read in the
+# other two.
+@pytest.mark.parametrize(("source", "name", "locale"),
+                         [("fixture", "ratchet_crank_rocker", "en"), ("fixture", "ratchet_crank_rocker", "zh"),
+                          ("fixture", "scotch_yoke", "ru"), ("starter", "triad", "ru"), ("starter", "triad", "zh"),
+                          ("starter", "shaper", "ru")])
+def test_the_lever_arms_agree_in_every_language(tmp_path, source, name, locale):
+    made = run(graphplan.load(scene_path(tmp_path, source, name)), tmp_path / "out", only=["forces", "lever", "note"],
+               locale=locale)
+    check_arms_agree(tmp_path / "out", made, locale)
+
+
+# A run with the sheets takes each force_N.svg the sheets hold as drawn alone from their panels, with the lever's μV
+# they drew it at; on A4 the offset slider-crank's levers are kept larger on their parts.
+@pytest.mark.parametrize(("source", "name", "sheet"), [("starter", "crank-rocker", None),
+                                                       ("fixture", "offset_slider_crank", "A4")])
+def test_the_lever_arms_agree_where_the_sheets_are_drawn_too(tmp_path, source, name, sheet):
+    scene = graphplan.load(scene_path(tmp_path, source, name))
+    made = run(scene, tmp_path / "out", sheet=sheet)
+    check_arms_agree(tmp_path / "out", made, scene.locale)
