@@ -70,7 +70,7 @@ def test_the_title_block_is_written_as_the_user_wrote_it():
 
 
 @pytest.mark.parametrize("symbol", ["R12", "R23τ", "Fu2", "Mи3", "ω2", "ε4", "μV", "μt", "μφ", "ΔWmax", "JF", "sB",
-                                    "aBA^τ"])
+                                    "hu4", "hи3", "hb", "hу", "aBA^τ"])
 def test_a_symbol_is_indexed_as_the_note_indexes_it(symbol):
     """The drawing's runs and the note's HTML set the same part of a symbol below and above the line."""
     html = "".join(text if place == LINE else f"<{'sub' if place == BELOW else 'sup'}>{text}</{'sub' if place == BELOW else 'sup'}>"

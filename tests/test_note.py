@@ -632,11 +632,11 @@ def test_a_speed_given_in_rpm_is_among_the_initial_data_with_omega_worked_out_fr
 
 def test_the_speed_in_rpm_and_the_points_take_their_indices_below_the_line():
     assert symbols_html("n2") == "n<sub>2</sub>"
-    # A plan's points as the drawings letter them (n₄, s₂, σ₆), in the vectors that run them together; a number and
-    # the drawings' arm of an inertia force are none.
+    # A plan's points as the drawings letter them (n₄, s₂, σ₆), in the vectors that run them together; a number is
+    # none, and the arm of an inertia force is h with u₄ below, as the drawings set it, not the vector from h to u₄.
     assert symbols_html("πn2/30 = π·1500/30; ⊥ CB через n4; πn4 = 2,99; n4b; ps2·μV; b4k5; pσ6; n6′; 1e2; hu4") == (
         "πn<sub>2</sub>/30 = π·1500/30; ⊥ CB через n<sub>4</sub>; πn<sub>4</sub> = 2,99; n<sub>4</sub>b; "
-        "ps<sub>2</sub>·μ<sub>V</sub>; b<sub>4</sub>k<sub>5</sub>; pσ<sub>6</sub>; n<sub>6</sub>′; 1e2; hu4")
+        "ps<sub>2</sub>·μ<sub>V</sub>; b<sub>4</sub>k<sub>5</sub>; pσ<sub>6</sub>; n<sub>6</sub>′; 1e2; h<sub>u4</sub>")
     # A mechanism's point alone, as the drawings letter it (A₄, Σ₆, S₂′); an integrator's name is none.
     assert symbols_html("A4 is the point of link 4; Σ6 moves; S2′; L − L0; RK45, DOP853") == (
         "A<sub>4</sub> is the point of link 4; Σ<sub>6</sub> moves; S<sub>2</sub>′; L − L<sub>0</sub>; RK45, DOP853")

@@ -51,8 +51,9 @@ SYMBOL = re.compile(
     r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[иу]\d*|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
     r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
-    # The arm of the balancing force on Zhukovsky's lever (hb, in Russian hу), as the lever's drawing letters it.
-    r"|(?P<base34>h)(?P<index34>[bу])"
+    # The arm of the balancing force on Zhukovsky's lever (hb, in Russian hу) and the shift of an inertia force from
+    # its centre of mass (hu4, hи4), as the drawings letter them.
+    r"|(?P<base34>h)(?P<index34>[bу]|[uи]\d+)"
     # ΣMp: Zhukovsky's lever's moments about its pole p.
     rf"|(?<=Σ)(?P<base8>M)(?P<index8>{_POINTS}|p)"
     # A group's class with its order in the structure formula (II2(3,4)), which the textbooks set as II₂.
