@@ -19,7 +19,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import MultiPoint
+from shapely.geometry import LineString, MultiPoint
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
@@ -59,6 +59,7 @@ from .linkage import (
 )
 from .primitives import (
     Arrow,
+    Circle,
     Layer,
     Polyline,
     Primitive,
@@ -85,6 +86,9 @@ SENSE_ARROW_MM = 12.0
 GUIDE_REACH_MM = 20.0
 # Radius of the curved arrows of ω and ε on the links (mm).
 TURN_RADIUS_MM = 7.0
+# How near a curved arrow of ω or ε may come to the middle of a line of the frame or a pin's circle (the half width
+# of the boldest, a pivot's 0.7 mm triangle or a pin, and the arrow's) (mm).
+_FRAME_CLEARANCE_MM = 0.6
 # Space between the three drawings, and between a drawing and its caption (mm).
 GAP_MM = 25.0
 CAPTION_GAP_MM = 12.0
@@ -294,7 +298,8 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     # Named points, and frame points that are no pivot (the end of a guide), as dots.
     marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
     marks += loose_frame_points(mechanism, paper)
-    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded)
+    pins = [item for item in links if isinstance(item, Circle)]
+    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded, pins)
     special, special_at = _special_points(sheet.velocity, where, paper)
     marks += special
     drawn = loaded + links + frame + marks + senses
@@ -342,7 +347,7 @@ def _special_points(velocity: Plan, where: Callable[[str], complex],
 
 
 def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[str], complex],
-            paper: Paper, frame: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
+            paper: Paper, frame: list[Primitive], pins: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
     """Short arrows along the velocities of the joints; curved arrows of ω and ε on each turning link.
 
     The senses are read off the plans: a point's velocity is along its
@@ -364,26 +369,38 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
         end = (start[0] + SENSE_ARROW_MM * sense.real, start[1] + SENSE_ARROW_MM * sense.imag)
         items.append(Arrow(start, end, Stroke(0.45, _VELOCITY_COLOUR), 3.0, svg_id("mechanism", "v", name)))
     points = MultiPoint([paper(where(name)) for name in sheet.motion.points])
+    frame_shapes = obstacles_of(frame)
+    # The ink an arc must keep off: the frame's symbols (a pivot's pin, triangle and hatching, a guide) and the
+    # moving joints' pins, as wide as their lines and the arc's together.
+    frame_and_pins = unary_union([shape.buffer(_FRAME_CLEARANCE_MM) for shape in frame_shapes + obstacles_of(pins)])
     anchors: list[Anchor] = []
     for link in sheet.mechanism.moving_links:
         names = outlines.get(link, [])
         if len(names) < 2:
             continue
-        others = unary_union([points, *obstacles_of(frame)] + [
-            _outline(MultiPoint([paper(where(n)) for n in other]))
-            for number, other in outlines.items() if number != link and len(other) > 1])
+        other_links = [_outline(MultiPoint([paper(where(n)) for n in other]))
+                       for number, other in outlines.items() if number != link and len(other) > 1]
+        others = unary_union([points, *frame_shapes] + other_links)
         first, second = max(((a, b) for i, a in enumerate(names) for b in names[i + 1:]),
                             key=lambda ab: abs(where(ab[0]) - where(ab[1])))
         start_mm, end_mm = paper(where(first)), paper(where(second))
         along = math.atan2(end_mm[1] - start_mm[1], end_mm[0] - start_mm[0])
-        centre = _clear_spot(start_mm, end_mm, others)
+        turns = []
         for symbol, rates, colour, side in (("ω", velocity.rates, _VELOCITY_COLOUR, 0.0),
                                             ("ε", acceleration.rates, _ACCELERATION_COLOUR, math.pi)):
             rate = rates.get(link, 0.0)
             if abs(rate) <= 1e-9 * max([1.0, *(abs(r) for r in rates.values())]):
                 continue
             sweep = math.copysign(math.radians(100.0), rate)
-            start = along + side - sweep / 2
+            turns.append((symbol, colour, along + side - sweep / 2, sweep))
+        if not turns:
+            continue
+        # The arrows drawn so far (the joints' velocities, the other links' ω and ε).
+        arrows = unary_union([shape.buffer(_FRAME_CLEARANCE_MM) for shape in obstacles_of(items)])
+        centre, turned = _clear_spot(start_mm, end_mm, others, frame_and_pins, arrows,
+                                     [(start, sweep) for _, _, start, sweep in turns])
+        for symbol, colour, start, sweep in turns:
+            start += turned
             items.extend(curved_arrow(centre, TURN_RADIUS_MM, start, sweep, Stroke(0.45, colour), 2.8))
             tail = (centre[0] + TURN_RADIUS_MM * math.cos(start), centre[1] + TURN_RADIUS_MM * math.sin(start))
             anchors.append(Anchor(tail, f"{symbol}{link}", lettering.NAME, start, colour))
@@ -396,11 +413,40 @@ def _outline(points: MultiPoint) -> BaseGeometry:
     return hull.boundary if hull.geom_type == "Polygon" else hull
 
 
-def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: BaseGeometry) -> tuple[float, float]:
-    """The spot on the segment, among a few, farthest from the mechanism's points and its other links."""
+def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: BaseGeometry, frame: BaseGeometry,
+                arrows: BaseGeometry, arcs: Sequence[tuple[float, float]]) -> tuple[tuple[float, float], float]:
+    """The spot on the segment, among a few, about which the curved arrows ``arcs`` (each its start angle and sweep,
+    of radius :data:`TURN_RADIUS_MM`) are drawn, and the half turn (0 or π) they are turned through there.
+
+    The spot farthest from the mechanism's points and its other links, ``others``, where the arrows drawn about it
+    keep off ``frame``, the ink of the frame's symbols and the pins; else the spot and half turn that run them least
+    over that ink, then least over ``arrows``, the arrows drawn so far, then the farthest from ``others``.  Weighed
+    by its centre alone, the spot a short crank's ω was turned about stood a few millimetres from its pivot (the
+    slotted lever's, the shaper's, the triads'), and the arc, 7 mm round, ran over the pivot's triangle and
+    hatching.  Turned through a half turn, ω bulges toward the link's other end (and ε, opposite it, toward this
+    one): a crank too short for any of its spots to keep ω off its pivot keeps it toward its crankpin.
+    """
     spots = [(start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]))
              for t in (0.5, 0.65, 0.35, 0.75, 0.25)]
-    return max(spots, key=lambda spot: round(others.distance(ShapelyPoint(spot)), 6))
+
+    def over(ink: BaseGeometry, spot: tuple[float, float], turned: float) -> float:
+        return round(sum(_arc_line(spot, begin + turned, sweep).intersection(ink).length for begin, sweep in arcs), 3)
+
+    def room(spot: tuple[float, float]) -> float:
+        return round(others.distance(ShapelyPoint(spot)), 6)
+
+    farthest = max(spots, key=room)
+    if over(frame, farthest, 0.0) == 0:
+        return farthest, 0.0
+    return min(((spot, turned) for turned in (0.0, math.pi) for spot in spots),
+               key=lambda choice: (over(frame, *choice), over(arrows, *choice), -room(choice[0])))
+
+
+def _arc_line(centre: tuple[float, float], start: float, sweep: float) -> LineString:
+    """The arc of a curved arrow of radius :data:`TURN_RADIUS_MM`, head and all, as a line."""
+    steps = max(8, int(abs(sweep) / math.radians(5)))
+    return LineString([(centre[0] + TURN_RADIUS_MM * math.cos(start + sweep * k / steps),
+                        centre[1] + TURN_RADIUS_MM * math.sin(start + sweep * k / steps)) for k in range(steps + 1)])
 
 
 # A plan.
