@@ -1,13 +1,14 @@
 """The curved arrows of ω and ε on the mechanism of a plan sheet keep off the frame's symbols (a pivot's triangle,
-its ground line and hatching, a guide) and the moving joints' pins.
+its ground line and hatching, a guide) and the moving joints' pins and slider blocks.
 
 Each arrow was turned about the spot of its link farthest from the other links and points, weighed by that spot
 alone: on a short crank beside a rocker (the slotted lever's, the shaper's, the triads') the spot stood a few
 millimetres from the crank's pivot, and the arc, 7 mm round it, ran over the pivot's triangle and hatching; moved
-off the frame alone, the arc of the triad's crank, 12 mm long, ran over its crankpin.  The arrows, the frame and the
-pins are read back from the plan_N.svg a run writes: an arrow is each path of more than four points drawn straight
-in the layer of the senses (the joints' velocities are arrows of their own groups), the frame every stroked path and
-pin of its layer, the pins the circles of the links' layer, each as wide as its stroke draws it.
+off the frame alone, the arc of the triad's crank, 12 mm long, ran over its crankpin, and the shaper's over the top
+of its slider block.  The arrows, the frame, the pins and blocks are read back from the plan_N.svg a run writes: an
+arrow is each path of more than four points drawn straight in the layer of the senses (the joints' velocities are
+arrows of their own groups), the frame every stroked path and pin of its layer, the pins and blocks the circles and
+filled outlines of the links' layer, each as wide as its stroke draws it.
 """
 
 from __future__ import annotations
@@ -66,7 +67,11 @@ def frame_ink(root: ET.Element) -> shapely.Geometry:
 
 
 def pins_ink(root: ET.Element) -> shapely.Geometry:
-    return shapely.union_all([_ink(pin) for pin in layer(root, "mechanism-links").iter(f"{SVG}circle")])
+    """The moving joints' pins and the slider blocks round them: the circles and filled outlines of the links."""
+    links = layer(root, "mechanism-links")
+    return shapely.union_all([_ink(element) for element in links.iter()
+                              if element.tag == f"{SVG}circle"
+                              or (element.tag == f"{SVG}path" and element.get("fill", "none") != "none")])
 
 
 def arrows_on_the_frame(plan: Path) -> list[str]:
@@ -74,7 +79,7 @@ def arrows_on_the_frame(plan: Path) -> list[str]:
     frame, pins, arrows = frame_ink(root), pins_ink(root), turn_arrows(root)
     assert arrows and not frame.is_empty and not pins.is_empty, f"{plan.name}: no curved arrows, frame or pins read"
     return [f"{plan.name}: an arc of ω or ε over {arc.intersection(ink).area:.2f} mm² of the {what}"
-            for arc in arrows for what, ink in (("frame", frame), ("pins", pins)) if arc.intersects(ink)]
+            for arc in arrows for what, ink in (("frame", frame), ("pins and blocks", pins)) if arc.intersects(ink)]
 
 
 @pytest.fixture(scope="module", params=FIXTURES + STARTERS)
@@ -88,7 +93,7 @@ def written_plans(request, tmp_path_factory) -> list[Path]:
     return plan_sheets_alone(scene, folder / "out")
 
 
-def test_no_curved_arrow_of_a_link_runs_over_the_frame_or_a_pin(written_plans):
+def test_no_curved_arrow_of_a_link_runs_over_the_frame_a_pin_or_a_block(written_plans):
     assert [found for plan in written_plans for found in arrows_on_the_frame(plan)] == []
 
 

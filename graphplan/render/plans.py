@@ -298,7 +298,8 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     # Named points, and frame points that are no pivot (the end of a guide), as dots.
     marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
     marks += loose_frame_points(mechanism, paper)
-    pins = [item for item in links if isinstance(item, Circle)]
+    # The joints' pins and the blocks round them, which a curved arrow is kept off as the frame is.
+    pins = [item for item in links if isinstance(item, Circle) or (isinstance(item, Polyline) and item.fill)]
     senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded, pins)
     special, special_at = _special_points(sheet.velocity, where, paper)
     marks += special
@@ -371,7 +372,7 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
     points = MultiPoint([paper(where(name)) for name in sheet.motion.points])
     frame_shapes = obstacles_of(frame)
     # The ink an arc must keep off: the frame's symbols (a pivot's pin, triangle and hatching, a guide) and the
-    # moving joints' pins, as wide as their lines and the arc's together.
+    # moving joints' pins and blocks, as wide as their lines and the arc's together.
     frame_and_pins = unary_union([shape.buffer(_FRAME_CLEARANCE_MM) for shape in frame_shapes + obstacles_of(pins)])
     anchors: list[Anchor] = []
     for link in sheet.mechanism.moving_links:
