@@ -24,6 +24,7 @@ from sheet_texts import flat
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.locale import strings
 from graphplan.report import forces as force_report
 from graphplan.report import tables
 from graphplan.report.html import symbols_html, to_html
@@ -578,7 +579,10 @@ def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
                 assert f"ρ{at} = f·r = {n(pair.spec.f)}·{n(pair.spec.radius)} = {n(pair.radius)} m" in note
         lever = plan.lever_with_friction.balancing
         assert lever == pytest.approx(rubbing.balancing, rel=1e-9)
-        assert f"Zhukovsky's lever with the friction loads above gives Mb = {n(lever)} N·m" in note
+        # Worked as the lever without friction is, after its own table: |Mb| = Fb·lOA = … N·m.
+        caption = strings("en")["note_friction_lever_table"].format(number=plan.number)
+        worked = note.split(caption, 1)[1].split("![", 1)[0]
+        assert f"= {force_report.number(abs(lever), 6)} N·m" in worked
 
 
 @pytest.mark.parametrize("given", [True, False])

@@ -75,10 +75,11 @@ def sheet_arms(svg: Path) -> tuple[dict[str, str], set[str], dict[str, float]]:
     return named, lettered, lengths
 
 
-def note_arms(markdown: str, locale: str) -> dict[int, list[tuple[str, str | None, float]]]:
-    """By position, each row of the note's table of the lever's moments: the load, its arm's name (None where the
-    row names none) and its length (mm)."""
-    title = re.escape(strings(locale)["note_lever_table"]).replace(re.escape("{number}"), r"(\d+)") + r"$"
+def note_arms(markdown: str, locale: str, table: str = "note_lever_table"
+              ) -> dict[int, list[tuple[str, str | None, float]]]:
+    """By position, each row of the note's table of the lever's moments (``table`` names its caption: the lever's
+    with friction is another): the load, its arm's name (None where the row names none) and its length (mm)."""
+    title = re.escape(strings(locale)[table]).replace(re.escape("{number}"), r"(\d+)") + r"$"
     found: dict[int, list[tuple[str, str | None, float]]] = {}
     number = None
     for line in markdown.splitlines():
@@ -98,29 +99,41 @@ def note_arms(markdown: str, locale: str) -> dict[int, list[tuple[str, str | Non
     return found
 
 
-def check_arms_agree(folder: Path, made, locale: str) -> None:
-    text = strings(locale)
-    note = note_arms((folder / "note.md").read_text(encoding="utf-8"), locale)
-    checked = 0
+def levers(made, friction: bool):
+    """Each position's number, lever and the force sheet that draws it: the lever without friction on forces_N.svg,
+    or (``friction``) the lever with the pairs' friction loads on forces_friction_N.svg, drawn where the construction
+    with friction settled and does not lock."""
     for plan in made.analysis.plans:
-        if plan.lever is None:
-            continue
-        latin = {load_symbol(term.name, text): term.name for term in plan.lever.terms}
-        named, lettered, lengths = sheet_arms(folder / f"forces_{plan.number}.svg")
+        if not friction and plan.lever is not None:
+            yield plan.number, plan.lever, f"forces_{plan.number}.svg"
+        rubbing = plan.with_friction
+        if friction and plan.lever_with_friction is not None and rubbing is not None and not rubbing.locked:
+            yield plan.number, plan.lever_with_friction, f"forces_friction_{plan.number}.svg"
+
+
+def check_arms_agree(folder: Path, made, locale: str, friction: bool = False) -> None:
+    text = strings(locale)
+    note = note_arms((folder / "note.md").read_text(encoding="utf-8"), locale,
+                     "note_friction_lever_table" if friction else "note_lever_table")
+    checked = 0
+    for number, lever, drawing in levers(made, friction):
+        latin = {load_symbol(term.name, text): term.name for term in lever.terms}
+        named, lettered, lengths = sheet_arms(folder / drawing)
         # The note tables the loads, Fb's arm worked apart from them; the lever letters each arm ΣMp names, no other.
         assert named.pop(load_symbol("Fb", text)) == load_symbol("hb", text)
-        assert lettered == {*named.values(), load_symbol("hb", text)}, f"position {plan.number}: {lettered}, {named}"
-        rows = note[plan.number]
+        assert lettered == {*named.values(), load_symbol("hb", text)}, f"position {number}: {lettered}, {named}"
+        assert number in note, f"{drawing}: the note has no table of its lever's moments"
+        rows = note[number]
         written = {name: arm for name, arm, _ in rows if arm is not None}
-        assert written == named, (f"position {plan.number}: the sheet's lever names the arms {named}, "
+        assert written == named, (f"position {number}: the sheet's lever names the arms {named}, "
                                   f"the note's table {written}")
         # A shared arm's length is written once per row and drawn once, from its first load's point.
         for arm in set(named.values()):
             loads = [(name, length) for name, written_arm, length in rows if written_arm == arm]
             drawn = [lengths[key] for name, _ in loads if (key := svg_id("lever-arm", latin[name])) in lengths]
-            assert len({length for _, length in loads}) == 1, f"position {plan.number}: {arm} of {loads}"
+            assert len({length for _, length in loads}) == 1, f"position {number}: {arm} of {loads}"
             if drawn:
-                assert abs(drawn[0] - loads[0][1]) <= 0.01, (f"position {plan.number}: {arm} = {loads[0][1]} mm "
+                assert abs(drawn[0] - loads[0][1]) <= 0.01, (f"position {number}: {arm} = {loads[0][1]} mm "
                                                              f"in the note, {drawn[0]:.3f} mm on the sheet")
         checked += len(named)
     assert checked > 0, "no lever names an arm"

@@ -12,12 +12,14 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
 
 from .. import load_diagrams, settling
 from ..analysis import Analysis, PlanPosition
+from ..lever import Lever
 from ..locale import Count, load_symbol, load_symbols_in
 from ..mechanism import Mechanism
 from ..plans import Plan
@@ -49,6 +51,21 @@ class Writer(SectionWriter, Protocol):
     def segment(self, plan: Plan, start: str, end: str) -> str: ...
     def reactions_named(self) -> str: ...
     found: dict[str, object]
+
+
+@dataclass(frozen=True)
+class LeverWords:
+    """The locale's keys a worked Zhukovsky's lever is introduced, captioned and set against its polygons by."""
+
+    intro: str
+    table: str
+    difference: str
+
+
+# The lever without friction, and the one with the pairs' friction loads, which the sheet with friction draws: one
+# worked table and equation each, in words that tell them apart.
+PLAIN_LEVER = LeverWords("note_lever_intro", "note_lever_table", "note_lever_difference")
+FRICTION_LEVER = LeverWords("note_friction_lever_intro", "note_friction_lever_table", "note_friction_lever_difference")
 
 
 def forces_section(note: Writer, section: int) -> None:
@@ -255,12 +272,10 @@ def _both_links(note: Writer, plan: PlanPosition) -> str:
 
 
 def _friction_lever(note: Writer, plan: PlanPosition) -> None:
-    """Zhukovsky's lever with the friction loads, against the polygons with friction."""
-    rubbing = plan.with_friction
-    lever = plan.lever_with_friction
-    name, unit = force_report.balancing_symbol(note.analysis)
-    note.para(note.t("note_friction_lever", name=name, value=note.n(lever.balancing), unit=unit,
-                     difference=force_report.percent(lever.balancing, rubbing.balancing, note.mark)))
+    """Zhukovsky's lever with the friction loads worked as the force sheet with friction draws it, against the
+    polygons with friction."""
+    _worked_lever(note, plan, plan.lever_with_friction, f"forces_friction_{plan.number}.svg",
+                  plan.with_friction.balancing, FRICTION_LEVER)
 
 
 def _direction(note: Writer, force: complex) -> str:
@@ -573,71 +588,82 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
                      sense=note.with_sense(polygons) if driver.kind == "crank" else ""))
     lever = plan.lever
     if lever is not None:
-        velocity = plan.velocity
-        # As the force sheet beside the note draws it: a small sheet may draw it smaller than enlarged.
-        drawn_at = (note.lever_scales.get(f"forces_{plan.number}.svg") or enlarged_lever_scale(velocity, lever)
-                    or velocity.scale)
-        # Each arm by the name the sheet's lever letters it (h1, h2, hb), a shared arm's in each of its loads' rows; a
-        # load the lever names no arm for (one with no moment, at the pole) keeps its length alone.
-        arm_names = lever.arm_names(velocity, drawn_at, note.mechanism.scene.drawing.drafting_precision)
-        rows = []
-        total = 0.0
-        largest = max((abs(term.moment) for term in lever.terms), default=0.0)
-        strongest = max((abs(term.force) for term in lever.terms), default=0.0)
-        for term in lever.terms:
-            if abs(term.force) <= ROUNDING * strongest and abs(term.moment) <= ROUNDING * largest:
-                continue  # a load of the plan's rounding: no load
-            # a load whose line passes through the pole has no moment, whatever rounding says
-            moment_mm = term.moment / drawn_at if abs(term.moment) > ROUNDING * largest else 0.0
-            total += moment_mm
-            point = note.letter(velocity, term.image) if term.image else "—"
-            if term.image and term.shift:  # a displaced Fu acts at the image of its own point, off its link's
-                link = term.name.removeprefix("Fu")
-                point += f" + ω{link}·{load_symbol(f'hu{link}', text)}"
-            # The lever's sheet leaves out an arm shorter than a plan draws, as the plans leave out a vector.
-            arm = note.on_plan(term.arm / drawn_at) if term.image else "—"
-            if term.name in arm_names:
-                arm = f"{load_symbol(arm_names[term.name], text)} = {arm}"
-            force = note.n(abs(term.force)) if term.image else "—"
-            rows.append([load_symbol(term.name, text), point, force, arm, note.n(moment_mm)])
-        note.para(note.t("note_lever_intro", sign=note.text["note_lever_sign"]))
-        for term in lever.terms:
-            if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
-                note.para(note.t("note_lever_block", name=load_symbol(term.name, text), link=term.link))
-        if drawn_at != velocity.scale:
-            scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", note.mark))
-            note.para(note.t("note_lever_scale", scale=scale))
-        header = [note.t("column_force"), note.t("column_point"), f"F, {text['newton']}",
-                  f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
-        note.table(note.t("note_lever_table", number=plan.number), header, rows, "llrrr")
-        pa = abs(velocity.value(driver.joint)) / drawn_at
-        segment = note.segment(velocity, "p", velocity.images[driver.joint])
-        force = abs(total) / pa if pa else math.nan
-        # Fb as long as |Mb| = Fb·l, written to six digits, needs it to read so; then |Σ(F·h)| and pa as long as Fb needs.
-        moment = note.n(abs(lever.balancing), 6)
-        if driver.kind == "crank":
-            written_force, arm = reproducing(note, [force, driver.length], [5, 5], moment, 6,
-                                             lambda force, arm: force * arm)
-        else:
-            written_force = note.n(force)
-        moments, pole = reproducing(note, [abs(total), pa], [5, 5], written_force,
-                                    _digits(written_force), lambda moments, pole: moments / pole)
-        # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
-        lever_force = load_symbol("Fb", text)
-        equation = f"{lever_force} = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"
-        if driver.kind == "crank":
-            length = f"l{driver.pivot}{driver.joint}"
-            equation += (f"{text['separator']}|{name}| = {lever_force}·{length} = {note.product(written_force, arm)} = "
-                         f"{moment} {unit}{note.with_sense(lever.balancing)}")
-            note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True),
-                             equation=equation))
-        else:  # a slider's balancing load is the lever's force itself, signed: not named twice as if another load
-            equation += f"{text['separator']}{name} = {note.n(lever.balancing, 6)} {unit}"
-            note.para(note.t("note_lever_result_force", equation=equation))
-        difference = lever.difference_percent(polygons)
-        note.para(note.t("note_lever_difference", name=name, lever=note.n(lever.balancing, 6),
-                         polygons=note.enclosed(note.n(polygons, 6)), delta=note.n(difference, 3)))
+        difference = _worked_lever(note, plan, lever, f"forces_{plan.number}.svg", polygons, PLAIN_LEVER)
         found["lever"], found["delta"] = note.n(lever.balancing, 6), note.n(difference, 3)
     note.captioned(note.t("note_balancing_table", load=balancing_load(note.mechanism, text), name=name,
                           number=plan.number),
                    force_report.balancing_lines(analysis, plan, note.mark))
+
+
+def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, polygons: float,
+                  words: LeverWords) -> float:
+    """Zhukovsky's ``lever`` of ``plan`` worked as the force sheet ``drawing`` draws it: the table of its loads'
+    moments, each arm named as the sheet letters it, Fb and the balancing load from them, and how far they part from
+    the balancing load by the ``polygons``, which is returned (%)."""
+    text = note.text
+    name, unit = force_report.balancing_symbol(note.analysis)
+    driver = note.mechanism.driver
+    velocity = plan.velocity
+    # As the force sheet beside the note draws it: a small sheet may draw it smaller than enlarged.
+    drawn_at = note.lever_scales.get(drawing) or enlarged_lever_scale(velocity, lever) or velocity.scale
+    # Each arm by the name the sheet's lever letters it (h1, h2, hb), a shared arm's in each of its loads' rows; a
+    # load the lever names no arm for (one with no moment, at the pole) keeps its length alone.
+    arm_names = lever.arm_names(velocity, drawn_at, note.mechanism.scene.drawing.drafting_precision)
+    rows = []
+    total = 0.0
+    largest = max((abs(term.moment) for term in lever.terms), default=0.0)
+    strongest = max((abs(term.force) for term in lever.terms), default=0.0)
+    for term in lever.terms:
+        if abs(term.force) <= ROUNDING * strongest and abs(term.moment) <= ROUNDING * largest:
+            continue  # a load of the plan's rounding: no load
+        # a load whose line passes through the pole has no moment, whatever rounding says
+        moment_mm = term.moment / drawn_at if abs(term.moment) > ROUNDING * largest else 0.0
+        total += moment_mm
+        point = note.letter(velocity, term.image) if term.image else "—"
+        if term.image and term.shift:  # a displaced Fu acts at the image of its own point, off its link's
+            link = term.name.removeprefix("Fu")
+            point += f" + ω{link}·{load_symbol(f'hu{link}', text)}"
+        # The lever's sheet leaves out an arm shorter than a plan draws, as the plans leave out a vector.
+        arm = note.on_plan(term.arm / drawn_at) if term.image else "—"
+        if term.name in arm_names:
+            arm = f"{load_symbol(arm_names[term.name], text)} = {arm}"
+        force = note.n(abs(term.force)) if term.image else "—"
+        rows.append([load_symbol(term.name, text), point, force, arm, note.n(moment_mm)])
+    note.para(note.t(words.intro, sign=note.text["note_lever_sign"]))
+    for term in lever.terms:
+        if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
+            note.para(note.t("note_lever_block", name=load_symbol(term.name, text), link=term.link))
+    if drawn_at != velocity.scale:
+        scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", note.mark))
+        note.para(note.t("note_lever_scale", scale=scale))
+    header = [note.t("column_force"), note.t("column_point"), f"F, {text['newton']}",
+              f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
+    note.table(note.t(words.table, number=plan.number), header, rows, "llrrr")
+    pa = abs(velocity.value(driver.joint)) / drawn_at
+    segment = note.segment(velocity, "p", velocity.images[driver.joint])
+    force = abs(total) / pa if pa else math.nan
+    # Fb as long as |Mb| = Fb·l, written to six digits, needs it to read so; then |Σ(F·h)| and pa as long as Fb needs.
+    moment = note.n(abs(lever.balancing), 6)
+    if driver.kind == "crank":
+        written_force, arm = reproducing(note, [force, driver.length], [5, 5], moment, 6,
+                                         lambda force, arm: force * arm)
+    else:
+        written_force = note.n(force)
+    moments, pole = reproducing(note, [abs(total), pa], [5, 5], written_force,
+                                _digits(written_force), lambda moments, pole: moments / pole)
+    # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
+    lever_force = load_symbol("Fb", text)
+    equation = f"{lever_force} = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"
+    if driver.kind == "crank":
+        length = f"l{driver.pivot}{driver.joint}"
+        equation += (f"{text['separator']}|{name}| = {lever_force}·{length} = {note.product(written_force, arm)} = "
+                     f"{moment} {unit}{note.with_sense(lever.balancing)}")
+        note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True),
+                         equation=equation))
+    else:  # a slider's balancing load is the lever's force itself, signed: not named twice as if another load
+        equation += f"{text['separator']}{name} = {note.n(lever.balancing, 6)} {unit}"
+        note.para(note.t("note_lever_result_force", equation=equation))
+    difference = lever.difference_percent(polygons)
+    note.para(note.t(words.difference, name=name, lever=note.n(lever.balancing, 6),
+                     polygons=note.enclosed(note.n(polygons, 6)), delta=note.n(difference, 3)))
+    return difference
