@@ -90,3 +90,25 @@ def test_the_lever_with_friction_agrees_where_the_sheets_are_drawn_too(tmp_path)
     path.write_text(CRANK_ROCKER, encoding="utf-8")
     made = run(graphplan.load(path), tmp_path / "out", sheet="A3")
     check_arms_agree(tmp_path / "out", made, "en", friction=True)
+
+
+def test_the_lever_with_friction_is_worked_at_the_scale_its_own_sheet_drew_it_at():
+    """The sheets may draw a lever a step smaller than the plan's enlarged one, each sheet's at its own μV: the
+    lever with friction is measured at forces_friction_N.svg's, not at the sheet without friction's.  Each arm the
+    note writes is the lever's perpendicular (m/s on the plan) over the μV given for its sheet."""
+    from graphplan.analysis import analyse
+    from graphplan.report.note import note_markdown
+    from graphplan.scene import loads as scene_from_text
+
+    analysis = analyse(scene_from_text(CRANK_ROCKER))
+    plan = next(plan for plan in analysis.plans if plan.lever_with_friction is not None)
+    lever = plan.lever_with_friction
+    plain_at, friction_at = plan.velocity.scale * 3, plan.velocity.scale * 2
+    markdown = note_markdown(analysis, lever_scales={f"forces_{plan.number}.svg": plain_at,
+                                                     f"forces_friction_{plan.number}.svg": friction_at})
+    rows = note_arms(markdown, "en", "note_friction_lever_table")[plan.number]
+    terms = {term.name: term for term in lever.terms}
+    measured = [(name, length) for name, arm, length in rows if arm is not None]
+    assert measured
+    for name, length in measured:
+        assert length == pytest.approx(terms[name].arm / friction_at, abs=0.006), name
