@@ -18,15 +18,14 @@ from xml.etree import ElementTree
 
 import pytest
 from note_lines import items_on_one_line
+from note_scenes import SCENES, STARTERS, scene_path
 
 import graphplan
 from graphplan.locale import strings
 from graphplan.render.force_marks import group_id
 from graphplan.run import run
-from graphplan.starters import starter
 
 SVG = "{http://www.w3.org/2000/svg}"
-FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 # A group's caption on a force sheet: its drawing's, or its equations' parted from it onto a row of their own.
 CAPTION = re.compile(r"^(?:body|equations)-(.+)-caption$")
 # A load's name with its arm lettered on the sheet: ``G3·h1``, ``Fи3·h2``, ``R23τ·h15``; the unknown's arm (``·AB``,
@@ -35,16 +34,6 @@ SHEET_ARM = re.compile(r"(?:^|(?<=[\s:(]))([^\s·:=(),]+)·(h\d+)(?![\w])")
 # A term of the note: ``M(G3) = −G3·h1 = …``, its arm numbered or, for a load the sheet draws no arrow for, bare.
 NOTE_ARM = re.compile(r"M\((?P<name>[^()]+)\) = −?(?P=name)·(?P<arm>h\d*)(?![\w])")
 
-SCENES = [("fixture", path.stem) for path in sorted(FIXTURES.glob("*.toml"))]
-STARTERS = [("starter", kind) for kind in ("shaper", "slotted-lever", "triad")]
-
-
-def scene_path(tmp_path: Path, source: str, name: str) -> Path:
-    if source == "fixture":
-        return FIXTURES / f"{name}.toml"
-    path = tmp_path / f"{name}.toml"
-    path.write_text(starter(name, "en"), encoding="utf-8")
-    return path
 
 
 def sheet_arms(folder: Path, labels: dict[str, str]) -> dict[tuple[int, bool, str], list[tuple[str, str]]]:

@@ -14,8 +14,8 @@ from __future__ import annotations
 import re
 
 import pytest
+from lever_arms import check_arms_agree, levers, note_arms
 from scene_texts import journal_friction, wedge_lift
-from test_note_lever_arm_names import check_arms_agree, levers, note_arms
 
 import graphplan
 from graphplan.locale import load_symbol, strings
