@@ -53,6 +53,7 @@ from .linkage import (
     frame_points_along,
     ground_side,
     guide_bushing,
+    link_outlines,
     links_at,
     loose_frame_points,
     outline_points,
@@ -89,6 +90,16 @@ TURN_RADIUS_MM = 7.0
 # How near a curved arrow of ω or ε may come to the middle of a line of the frame or a pin's circle (the half width
 # of the boldest, a pivot's 0.7 mm triangle or a pin, and the arrow's) (mm).
 _FRAME_CLEARANCE_MM = 0.6
+# The smaller radii a curved arrow is drawn at where the usual one finds no clear spot on a short link, down to the
+# least that still reads as a turn headed by its 2.8 mm arrowhead (some 64° of its 100° shown as shaft) (mm).
+_SHORT_TURN_RADII_MM = (6.0, 5.0, 4.5)
+# The radii of a crank's ω drawn round its pivot, 5 mm first: close round the pin, yet clear of its triangle (mm).
+_PIVOT_TURN_RADII_MM = (5.0, 4.5, 6.0, 7.0)
+# How far a curved arrow's ink is kept from the ink of the other links, the points' dots and the other arrows (mm).
+_ARC_GAP_MM = 0.3
+# The curved arrows' stroke and head (mm).
+_TURN_STROKE_MM = 0.45
+_TURN_HEAD_MM = 2.8
 # Space between the three drawings, and between a drawing and its caption (mm).
 GAP_MM = 25.0
 CAPTION_GAP_MM = 12.0
@@ -300,7 +311,10 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     marks += loose_frame_points(mechanism, paper)
     # The joints' pins and the blocks round them, which a curved arrow is kept off as the frame is.
     pins = [item for item in links if isinstance(item, Circle) or (isinstance(item, Polyline) and item.fill)]
-    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded, pins)
+    # Each link's lines alone, which the curved arrows of the other links keep clear of.
+    link_lines = {number: link_outlines(motion, index, {number: names}, paper, _LINK)
+                  for number, names in outlines.items()}
+    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded, pins, link_lines, marks)
     special, special_at = _special_points(sheet.velocity, where, paper)
     marks += special
     drawn = loaded + links + frame + marks + senses
@@ -348,12 +362,16 @@ def _special_points(velocity: Plan, where: Callable[[str], complex],
 
 
 def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[str], complex],
-            paper: Paper, frame: list[Primitive], pins: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
+            paper: Paper, frame: list[Primitive], pins: list[Primitive], link_lines: Mapping[int, list[Primitive]],
+            dots: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
     """Short arrows along the velocities of the joints; curved arrows of ω and ε on each turning link.
 
     The senses are read off the plans: a point's velocity is along its
     vector pb, a link's ω and ε are those the plans give.  Centres of mass
-    that are not joints get no arrow, to keep the links legible.
+    that are not joints get no arrow, to keep the links legible.  A link's
+    curved arrows keep off the frame and the pins (``frame``, ``pins``), and
+    where they can, off the other links' lines (``link_lines``, link by link),
+    the points' ``dots`` and the arrows drawn before them.
     """
     velocity, acceleration = sheet.velocity, sheet.acceleration
     named = {spec.name for spec in sheet.mechanism.scene.points}
@@ -374,6 +392,7 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
     # The ink an arc must keep off: the frame's symbols (a pivot's pin, triangle and hatching, a guide) and the
     # moving joints' pins and blocks, as wide as their lines and the arc's together.
     frame_and_pins = unary_union([shape.buffer(_FRAME_CLEARANCE_MM) for shape in frame_shapes + obstacles_of(pins)])
+    frame_and_pins_ink = unary_union(ink_of(frame + pins))
     anchors: list[Anchor] = []
     for link in sheet.mechanism.moving_links:
         names = outlines.get(link, [])
@@ -398,12 +417,20 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
             continue
         # The arrows drawn so far (the joints' velocities, the other links' ω and ε).
         arrows = unary_union([shape.buffer(_FRAME_CLEARANCE_MM) for shape in obstacles_of(items)])
-        centre, turned = _clear_spot(start_mm, end_mm, others, frame_and_pins, arrows,
-                                     [(start, sweep) for _, _, start, sweep in turns])
-        for symbol, colour, start, sweep in turns:
-            start += turned
-            items.extend(curved_arrow(centre, TURN_RADIUS_MM, start, sweep, Stroke(0.45, colour), 2.8))
-            tail = (centre[0] + TURN_RADIUS_MM * math.cos(start), centre[1] + TURN_RADIUS_MM * math.sin(start))
+        arcs = [(start, sweep) for _, _, start, sweep in turns]
+        centre, turned = _clear_spot(start_mm, end_mm, others, frame_and_pins, arrows, arcs)
+        placed = [(centre, TURN_RADIUS_MM, start + turned, sweep) for start, sweep in arcs]
+        crossed = unary_union(ink_of([line for number, lines in link_lines.items() if number != link for line in lines]
+                                     + dots + items, shafts_inked=True))
+        # Drawn again where their ink lies on other ink, and then kept a gap clear of it; arrows merely near other ink
+        # stay as they were.
+        if _over(placed, frame_and_pins_ink, crossed) != (0.0, 0.0):
+            crossed = crossed.buffer(_ARC_GAP_MM)
+            pivots = [paper(where(name)) for name in names if name in sheet.mechanism.scene.frame_points]
+            placed = _short_link_turns(placed, start_mm, end_mm, arcs, pivots[:1], frame_and_pins, crossed)
+        for (symbol, colour, _, _), (centre, radius, start, sweep) in zip(turns, placed):
+            items.extend(curved_arrow(centre, radius, start, sweep, Stroke(_TURN_STROKE_MM, colour), _TURN_HEAD_MM))
+            tail = (centre[0] + radius * math.cos(start), centre[1] + radius * math.sin(start))
             anchors.append(Anchor(tail, f"{symbol}{link}", lettering.NAME, start, colour))
     return items, anchors
 
@@ -427,8 +454,7 @@ def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: Ba
     hatching.  Turned through a half turn, ω bulges toward the link's other end (and ε, opposite it, toward this
     one): a crank too short for any of its spots to keep ω off its pivot keeps it toward its crankpin.
     """
-    spots = [(start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]))
-             for t in (0.5, 0.65, 0.35, 0.75, 0.25)]
+    spots = _spots(start, end)
 
     def over(ink: BaseGeometry, spot: tuple[float, float], turned: float) -> float:
         return round(sum(_arc_line(spot, begin + turned, sweep).intersection(ink).length for begin, sweep in arcs), 3)
@@ -441,6 +467,59 @@ def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: Ba
         return farthest, 0.0
     return min(((spot, turned) for turned in (0.0, math.pi) for spot in spots),
                key=lambda choice: (over(frame, *choice), over(arrows, *choice), -room(choice[0])))
+
+
+def _spots(start: tuple[float, float], end: tuple[float, float]) -> list[tuple[float, float]]:
+    """The few spots of a link's segment its curved arrows may be turned about, the middle first."""
+    return [(start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]))
+            for t in (0.5, 0.65, 0.35, 0.75, 0.25)]
+
+
+# A placed curved arrow: its centre, radius, start angle and sweep.
+_Turn = tuple[tuple[float, float], float, float, float]
+
+
+def _over(placed: Sequence[_Turn], frame: BaseGeometry, crossed: BaseGeometry) -> tuple[float, float]:
+    """How much of the ink of the curved arrows ``placed``, heads and all, lies on ``frame`` (the frame's symbols
+    and the pins) and on ``crossed`` (the other links, the dots, the arrows drawn so far) (mm²)."""
+    shape = unary_union(ink_of([item for centre, radius, start, sweep in placed
+                                for item in curved_arrow(centre, radius, start, sweep, Stroke(_TURN_STROKE_MM),
+                                                         _TURN_HEAD_MM)], shafts_inked=True))
+    return round(shape.intersection(frame).area, 3), round(shape.intersection(crossed).area, 3)
+
+
+def _short_link_turns(placed: list[_Turn], start: tuple[float, float], end: tuple[float, float],
+                      arcs: Sequence[tuple[float, float]], pivots: Sequence[tuple[float, float]],
+                      frame: BaseGeometry, crossed: BaseGeometry) -> list[_Turn]:
+    """The curved arrows ``arcs`` of a link (each its start angle, the link's own, and sweep) drawn as a drafter
+    would where ``placed``, :func:`_clear_spot`'s, runs over other ink: about a spot of the link at a smaller radius,
+    or, a crank's lone ω, about its pivot (``pivots``, the link's fixed point if any), on the side away from the
+    ground first.  The first way clear of ``frame`` and ``crossed``: the usual radius on the link, then round the
+    pivot, then the smaller radii on the link; ``placed`` where none is clear.
+
+    A crank 12 to 17 mm long as drawn beside a rocker or a connecting rod at a narrow angle (the triads' at their
+    eighth position, the slotted lever's and the shaper's) has no spot where a 7 mm arc clears the other link: ω ran
+    over that link's line, over the point S2 on the crank, along the arrow of S2's velocity.
+    """
+    ways: list[list[_Turn]] = []
+    # The spots nearest the one :func:`_clear_spot` chose first: the arrows move no farther than they must.
+    spots = sorted(_spots(start, end), key=lambda spot: math.dist(spot, placed[0][0]))
+
+    def on_the_link(radius: float) -> list[list[_Turn]]:
+        return [[(spot, radius, begin + turned, sweep) for begin, sweep in arcs]
+                for turned in (0.0, math.pi) for spot in spots]
+
+    ways += on_the_link(TURN_RADIUS_MM)
+    if len(arcs) == 1:
+        # Close round the pivot, as a crank's ω1 is drawn round O, and away from its triangle and hatching (which
+        # stand below it on the paper) first.
+        for radius in _PIVOT_TURN_RADII_MM:
+            ways += [[(pivot, radius, math.pi / 2 + side * math.radians(step) - sweep / 2, sweep)]
+                     for pivot in pivots for step in range(0, 120, 15) for side in ((1,) if step == 0 else (1, -1))
+                     for _, sweep in arcs]
+    for radius in _SHORT_TURN_RADII_MM:
+        ways += on_the_link(radius)
+    return next((way for way in ways if _over(way, frame, crossed) == (0.0, 0.0)), placed)
 
 
 def _arc_line(centre: tuple[float, float], start: float, sweep: float) -> LineString:
