@@ -10,7 +10,11 @@ from __future__ import annotations
 import cmath
 import math
 
+import shapely
+from shapely.geometry.base import BaseGeometry
+
 from . import lettering
+from .labels import LABEL_GAP_MM, ink_of
 from .primitives import Point, Polyline, Primitive, Stroke, Text, arrowhead, text_extent, to_complex, to_xy
 
 DIMENSION_STROKE = Stroke(0.25)
@@ -20,6 +24,10 @@ _PAST_MM = 2.0
 _HEAD_MM = 2.5
 _TEXT_MM = lettering.DIMENSION
 _TEXT_GAP_MM = 1.0
+# How far another label keeps off a dimension's lines and text (mm): as far as a label stands off its own point.  A
+# position's number set level just over a stroke's extension line, as close as a dimension's own text stands to its
+# line, read as that line's number (the Scotch yoke's 8, over the end of its stroke H).
+CLEARANCE_MM = LABEL_GAP_MM
 
 
 def linear(start: Point, end: Point, outward: complex, offset: float, text: str,
@@ -54,6 +62,13 @@ def angular(centre: Point, radius: float, start: float, sweep: float) -> list[Pr
     # Each head points along the arc, away from its middle.
     heads = [arrowhead(arc[-1], start + sweep + turning, _HEAD_MM), arrowhead(arc[0], start - turning, _HEAD_MM)]
     return [Polyline(arc, DIMENSION_STROKE), *heads]
+
+
+def kept_clear(items: list[Primitive]) -> list[BaseGeometry]:
+    """The room of a dimension's ``items`` (its lines, arrowheads and text) that other labels keep out of: their ink
+    grown by :data:`CLEARANCE_MM`."""
+    shapes = ink_of(items)
+    return list(shapely.buffer(shapes, CLEARANCE_MM)) if shapes else []
 
 
 def _beside(at: complex, outward: complex, text: str, size: float) -> Text:

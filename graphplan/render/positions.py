@@ -155,10 +155,11 @@ def layout(plan: PositionsPlan) -> list[Layer]:
         swing_labels += labels_of
         swing_texts += [item for item in items if travel.swing and isinstance(item, Text)]
     drawn = every + loaded + bold + frame + paths + dimension
-    # The bold lines the numbers and letters keep off by their ink: the extremes, the springs and cylinders, the
-    # travel's dimension; the letters the frame's symbols' too.
+    # The bold lines the numbers and letters keep off by their ink: the extremes, the springs and cylinders; the
+    # letters the frame's symbols' too.  The travel's dimension they keep farther off (dimensions.kept_clear): kept off
+    # its ink alone, the Scotch yoke's 8 stood level on the stroke's extension line as if it were the line's number.
     bold_lines = loaded + bold + dimension
-    bold_ink = ink_of(bold_lines)
+    bold_ink = ink_of(loaded + bold) + dimensions.kept_clear(dimension)
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
         # the frame's pivots' ink too, as the letters are: round a crank drawn a few millimetres long they fell on its
