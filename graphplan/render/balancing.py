@@ -12,7 +12,8 @@ middle carries small shares and would shrink to a knot of labels at the
 other plane's scale), each named beside its
 middle; then the closing vector, the correction mb·rb, drawn thicker in
 red from the last tip back to the pole, with its angle θ measured from a
-dashed x-direction at its tail.  Under each polygon its caption: the plane,
+dashed x-direction at its tail, or at its head to its line run on past the
+pole where the tail leaves a side's name no room.  Under each polygon its caption: the plane,
 its scale, its vector equation, any vector drawn beside the chain with what it would cover in its place, the
 correction's product, angle and mass, and under the one plane of a static
 balancing the couple Σ m·r·z it leaves.  The layout
@@ -89,7 +90,8 @@ FOLDED_ONTO_MM = 2.5
 # of a millisecond, and twelve masses' orders, 2000 of them weighed, took 1.5 s.
 MOST_ORDERS = 200
 MOST_STEPS = 5000
-# The radii tried for the correction's angle θ (mm), the first preferred: the one whose arc crosses the fewest sides.
+# The radii tried for the correction's angle θ (mm), at its tail and then at its head, the first preferred: the one
+# whose arc crosses the fewest sides, and of those the one that sends the fewest names out on leaders.
 ANGLE_RADII_MM = (7.0, 5.5, 4.5, 9.0, 11.0)
 
 _SHARE = Stroke(0.5)
@@ -298,10 +300,6 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str], plac
     # A polygon of nothing but its pole (every mass on the axis) is no drawing: a lone dot, at a scale of nothing.
     empty = _extent(plane) == 0
     pole = [] if empty else [dot_marker(_xy(mm(plane.vertices[0])), 0.7)]
-    tail = mm(plane.vectors[-1].start) + beside
-    radius = _angle_radius(plane, tail, arrows + leaders)
-    angle_marks = _angle_marks(plane, mm(plane.correction), tail, radius)
-    figure = arrows + leaders + pole + angle_marks
     middle = sum((mm(vertex) for vertex in plane.vertices[:-1]), 0j) / max(len(plane.vertices) - 1, 1)
     anchors = []
     for name, arrow in named:
@@ -311,11 +309,10 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str], plac
             across = -across
         anchors.append(Anchor(_xy(centre), name, NAME_SIZE, math.atan2(across.imag, across.real),
                               arrow.stroke.colour))
-    if angle_marks and plane.angle_deg is not None:
-        half = math.radians(plane.angle_deg) / 2
-        at = tail + (radius + 1.0) * complex(math.cos(half), math.sin(half))
-        anchors.append(Anchor(_xy(at), f"θ{plane.name}", ANGLE_NAME_SIZE, half, _ANGLE.colour))
-    labels = _lettered(anchors, figure, [*angle_marks, *arrows])
+    ends = (mm(plane.vectors[-1].start) + beside, mm(plane.vectors[-1].end) + beside)
+    radii = ANGLE_RADII_MM if plane.angle_deg is not None else ANGLE_RADII_MM[:1]
+    angle_marks, labels = min((_marked(plane, ends, at, radius, anchors, arrows, leaders + pole)
+                               for at in ends for radius in radii), key=lambda tried: tried[0])[1:]
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
@@ -431,32 +428,57 @@ def _folds(before: complex, side: complex) -> bool:
     return abs(math.degrees(math.atan2(turned.imag, turned.real))) < FOLDED_BACK_DEG and min(onto, over) < FOLDED_ONTO_MM
 
 
-def _angle_radius(plane: CorrectionPlane, tail: complex, drawn: Sequence[Primitive]) -> float:
-    """The radius (mm) of the correction's angle arc, of :data:`ANGLE_RADII_MM`, that crosses the fewest sides drawn:
-    the arc at 7 mm ran through a share passing near the correction's tail."""
+def _marked(plane: CorrectionPlane, ends: tuple[complex, complex], at: complex, radius: float,
+            anchors: list[Anchor], arrows: list[Arrow], drawn: list[Primitive]
+            ) -> tuple[tuple[int, int], list[Primitive], Placement]:
+    """The correction's angle marked at ``at``, one of its ``ends`` (tail, head), at ``radius``, and the labels placed
+    round it; first what that costs: the sides the arc crosses, then the names sent out on leaders.  Marked at the
+    tail alone, the rotor starter's plane L's x-direction ran over the spot beside the short (m3r3)L ending there,
+    whose name was led off under it, between the x-direction and (m1r1)L's arrowhead."""
+    marks = _angle_marks(plane, ends, at, radius)
+    named = list(anchors)
+    if marks and plane.angle_deg is not None:
+        half = math.radians(plane.angle_deg) / 2
+        spot = at + (radius + 1.0) * complex(math.cos(half), math.sin(half))
+        named.append(Anchor(_xy(spot), f"θ{plane.name}", ANGLE_NAME_SIZE, half, _ANGLE.colour))
+    labels = _lettered(named, [*arrows, *drawn, *marks], [*marks, *arrows])
+    # The arc ends on the correction at its tail, as it must: only elsewhere does the correction count as crossed.
+    sides = [arrow for arrow in arrows if arrow.stroke != _CORRECTION or at != ends[0]]
+    return (_crossings(plane, at, radius, sides + drawn), len(labels.leaders)), marks, labels
+
+
+def _crossings(plane: CorrectionPlane, at: complex, radius: float, drawn: Sequence[Primitive]) -> int:
+    """How many of the lines ``drawn`` the correction's angle arc about ``at`` at ``radius`` crosses: at 7 mm about
+    the tail the arc ran through a share passing near it."""
     if plane.angle_deg is None:
-        return ANGLE_RADII_MM[0]
-    lines = obstacles_of(drawn)
+        return 0
     sweep = math.radians(plane.angle_deg)
-
-    def crossings(radius: float) -> int:
-        steps = max(8, int(sweep / math.radians(5)))
-        arc = LineString([_xy(tail + radius * complex(math.cos(sweep * k / steps), math.sin(sweep * k / steps)))
-                          for k in range(steps + 1)])
-        return sum(arc.intersects(line) for line in lines)
-
-    return min(ANGLE_RADII_MM, key=crossings)
+    steps = max(8, int(sweep / math.radians(5)))
+    arc = LineString([_xy(at + radius * complex(math.cos(sweep * k / steps), math.sin(sweep * k / steps)))
+                      for k in range(steps + 1)])
+    return sum(arc.intersects(line) for line in obstacles_of(drawn))
 
 
-def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex, radius: float) -> list[Primitive]:
-    """The dashed x-direction at the correction's tail and the arc from it to the correction, ccw."""
-    if plane.angle_deg is None or abs(correction) < ZERO_MM:
+def _angle_marks(plane: CorrectionPlane, ends: tuple[complex, complex], at: complex, radius: float
+                 ) -> list[Primitive]:
+    """The dashed x-direction at ``at``, the correction's tail or head (its ``ends``), and the arc from it ccw to the
+    correction, or at its head to the correction's line run on past it, dashed as the x-direction is: a line makes
+    one angle with the x-direction at each of its points."""
+    tail, head = ends
+    if plane.angle_deg is None or abs(head - tail) < ZERO_MM:
         return []
-    marks: list[Primitive] = [Polyline((_xy(tail), _xy(tail + REFERENCE_MM)), _REFERENCE)]
+    marks: list[Primitive] = [Polyline((_xy(at), _xy(at + REFERENCE_MM)), _REFERENCE)]
+    if at != tail:
+        along = (head - tail) / abs(head - tail)
+        marks.append(Polyline((_xy(at), _xy(at + (radius + _RUN_ON_PAST_MM) * along)), _REFERENCE))
     sweep = math.radians(plane.angle_deg)
     if sweep > math.radians(2.0):
-        marks.extend(curved_arrow(_xy(tail), radius, 0.0, sweep, _ANGLE, head=2.0))
+        marks.extend(curved_arrow(_xy(at), radius, 0.0, sweep, _ANGLE, head=2.0))
     return marks
+
+
+# How far the correction's line, run on past its head to where its angle is marked, reaches past the arc (mm).
+_RUN_ON_PAST_MM = 3.0
 
 
 def _caption(plane: CorrectionPlane, scale: float | None, text: Mapping[str, str], placed: bool,
