@@ -45,16 +45,26 @@ def stroked_shapes(root: ET.Element, skipped: Collection[str] = ("leaders",)) ->
             if item.get("stroke", "none") == "none":
                 continue
             if item.tag == f"{SVG}path":
-                numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
-                points = list(zip(numbers[0::2], numbers[1::2]))
-                if item.get("d").rstrip().upper().endswith("Z"):
-                    points.append(points[0])
-                if len(points) >= 2:
-                    shapes.append(shapely.LineString(points).buffer(width / 2))
+                if len(path_points(item)) >= 2:
+                    shapes.append(stroked_path(item))
             elif item.tag == f"{SVG}circle":
                 centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
                 shapes.append(centre.buffer(float(item.get("r"))).exterior.buffer(width / 2))
     return shapes
+
+
+def path_points(item: ET.Element) -> list[tuple[float, float]]:
+    """The points an SVG path runs through, its first again at the end where it closes (``Z``)."""
+    numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
+    points = list(zip(numbers[0::2], numbers[1::2]))
+    if item.get("d").rstrip().upper().endswith("Z"):
+        points.append(points[0])
+    return points
+
+
+def stroked_path(item: ET.Element) -> shapely.Geometry:
+    """An SVG path's ink: its line widened by half its stroke."""
+    return shapely.LineString(path_points(item)).buffer(float(item.get("stroke-width", "0")) / 2)
 
 
 def caption_text(svg: str, element: str) -> str:

@@ -14,12 +14,12 @@ import cmath
 import functools
 import itertools
 import math
-import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
 import shapely
+from drawn_lines import stroked_path
 from test_force_along_a_turning_line import CRANK_ROCKER, _force, _with_loads
 from test_positions_labels_clear import _ink
 from test_spring_load import _spring
@@ -218,14 +218,7 @@ def test_a_scene_without_such_loads_draws_no_spring_or_cylinder(drawing):
 def _load_lines(root: ET.Element, group_id: str) -> list[shapely.Geometry]:
     """The spring's or the cylinder's paths in the SVG, each widened by half its stroke."""
     group = next(group for group in root.iter(f"{SVG}g") if group.get("id") == group_id)
-    shapes = []
-    for item in group.iter(f"{SVG}path"):
-        numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
-        points = list(zip(numbers[0::2], numbers[1::2]))
-        if item.get("d").rstrip().upper().endswith("Z"):
-            points.append(points[0])
-        shapes.append(shapely.LineString(points).buffer(float(item.get("stroke-width")) / 2))
-    return shapes
+    return [stroked_path(item) for item in group.iter(f"{SVG}path")]
 
 
 @pytest.mark.parametrize("drawing", sorted(DRAWINGS))

@@ -5,47 +5,25 @@ stroke's upper extension line, and its 12 hung just under the lower one."""
 
 from __future__ import annotations
 
-import re
 import xml.etree.ElementTree as ET
-from pathlib import Path
 
 import pytest
 import shapely
-from drawn_lines import SVG
+from drawn_lines import SVG, stroked_path
+from positions_runs import positions_plan
 from sheet_texts import layer_letter_boxes
-
-from graphplan.cli import main
-
-ROOT = Path(__file__).resolve().parent.parent
-
-
-def _positions_svg(tmp_path: Path, scene: str) -> ET.Element:
-    if scene.startswith("new:"):
-        path = tmp_path / "scene.toml"
-        assert main(["new", scene.removeprefix("new:"), "--out", str(path)]) == 0
-    else:
-        path = ROOT / "fixtures" / f"{scene}.toml"
-    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
-    return ET.fromstring((tmp_path / "out" / "positions.svg").read_text(encoding="utf-8"))
 
 
 def _dimension_lines(root: ET.Element) -> list[shapely.Geometry]:
     """The dimension's stroked lines and arrowheads as drawn, each as wide as its stroke."""
     (group,) = [group for group in root.iter(f"{SVG}g") if group.get("id") == "dimensions"]
-    shapes = []
-    for item in group.findall(f"{SVG}path"):
-        numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
-        points = list(zip(numbers[0::2], numbers[1::2]))
-        if item.get("d").rstrip().upper().endswith("Z"):
-            points.append(points[0])
-        shapes.append(shapely.LineString(points).buffer(float(item.get("stroke-width", "0")) / 2))
-    return shapes
+    return [stroked_path(item) for item in group.findall(f"{SVG}path")]
 
 
 @pytest.mark.parametrize("scene", ["scotch_yoke", "offset_slider_crank", "engine_slider_crank", "new:slider-crank",
                                    "new:shaper"])
 def test_no_label_stands_nearer_the_stroke_s_lines_than_its_own_text(tmp_path, scene) -> None:
-    root = _positions_svg(tmp_path, scene)
+    root = ET.fromstring(positions_plan(tmp_path, scene))
     lines = _dimension_lines(root)
     (written,) = [box for text, box in layer_letter_boxes(root, "dimensions") if text.startswith("H")]
     # How far the dimension's own text stands off its lines: the distance that reads as belonging to them.

@@ -11,26 +11,12 @@ from __future__ import annotations
 
 import re
 import xml.etree.ElementTree as ET
-from pathlib import Path
 
 import pytest
 import shapely
 from drawn_lines import stroked_shapes
+from positions_runs import positions_plan
 from sheet_texts import box, texts
-
-from graphplan.cli import main
-
-ROOT = Path(__file__).resolve().parent.parent
-
-
-def positions_plan(tmp_path: Path, scene: str) -> str:
-    if scene.startswith("new:"):
-        path = tmp_path / "scene.toml"
-        assert main(["new", scene.removeprefix("new:"), "--out", str(path)]) == 0
-    else:
-        path = ROOT / "fixtures" / f"{scene}.toml"
-    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
-    return (tmp_path / "out" / "positions.svg").read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("scene", ["scotch_yoke", "new:crank-rocker", "ratchet_crank_rocker", "tangent_mechanism_prp",
