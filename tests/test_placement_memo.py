@@ -87,10 +87,11 @@ def test_the_tuning_changed_places_anew(monkeypatch):
             queries.append(1)
             return super().query(geometry, *arguments, **keywords)
 
-    monkeypatch.setattr(labels, "STRtree", Counted)
-    _ask(anchors, obstacles)
+    # Undone alone: monkeypatch.undo() would undo the fixture's empty memos too and leave this worker's full one.
+    with monkeypatch.context() as counting:
+        counting.setattr(labels, "STRtree", Counted)
+        _ask(anchors, obstacles)
     assert queries  # placed again: its tree was asked
-    monkeypatch.undo()
     before = len(labels._placements)
     monkeypatch.setattr(labels, "FIRST_RINGS", 0)
     assert _ask(anchors, obstacles) == labels.place_labels(anchors, obstacles)
