@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import load_diagrams, settling
 from ..analysis import Analysis, PlanPosition
-from ..lever import Lever
+from ..lever import Lever, LeverTerm
 from ..locale import Count, load_symbol, load_symbols_in
 from ..mechanism import Mechanism
 from ..plans import Plan
@@ -66,6 +66,13 @@ class LeverWords:
 # worked table and equation each, in words that tell them apart.
 PLAIN_LEVER = LeverWords("note_lever_intro", "note_lever_table", "note_lever_difference")
 FRICTION_LEVER = LeverWords("note_friction_lever_intro", "note_friction_lever_table", "note_friction_lever_difference")
+
+# How a worked lever's intro says its loads are put on it: a clause for each kind of load its table has a row of, in
+# this order, so that a lever with no inertia moment, or with the friction of slides alone, names no Mu or Mf.  A
+# couple's forces (Mu3′, Mu3″) stand at images; a block's moment, which has none, is told apart (note_lever_block).
+LOADS_APPLIED = (("Mu", "note_lever_applied_inertia_moments"), ("Ff", "note_lever_applied_friction_forces"),
+                 ("Mf", "note_lever_applied_friction_moments"))
+_APPLIED_LOAD = re.compile(r"(Mu|Ff|Mf)\d+[′″]?")
 
 
 def forces_section(note: Writer, section: int) -> None:
@@ -595,6 +602,14 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
                    force_report.balancing_lines(analysis, plan, note.mark))
 
 
+def _loads_applied(note: Writer, tabled: list[LeverTerm]) -> str:
+    """What a lever's intro says of how the loads of its table's rows (``tabled``) are put on it: a clause for each
+    kind of :data:`LOADS_APPLIED` among them at an image, nothing where there is none."""
+    kinds = {found[1] for term in tabled if term.image and (found := _APPLIED_LOAD.fullmatch(term.name))}
+    clauses = [note.t(key) for kind, key in LOADS_APPLIED if kind in kinds]
+    return note.t("note_lever_applied", loads=note.text["semicolon"].join(clauses)) if clauses else ""
+
+
 def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, polygons: float,
                   words: LeverWords) -> float:
     """Zhukovsky's ``lever`` of ``plan`` worked as the force sheet ``drawing`` draws it: the table of its loads'
@@ -610,12 +625,14 @@ def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, 
     # load the lever names no arm for (one with no moment, at the pole) keeps its length alone.
     arm_names = lever.arm_names(velocity, drawn_at, note.mechanism.scene.drawing.drafting_precision)
     rows = []
+    tabled = []
     total = 0.0
     largest = max((abs(term.moment) for term in lever.terms), default=0.0)
     strongest = max((abs(term.force) for term in lever.terms), default=0.0)
     for term in lever.terms:
         if abs(term.force) <= ROUNDING * strongest and abs(term.moment) <= ROUNDING * largest:
             continue  # a load of the plan's rounding: no load
+        tabled.append(term)
         # a load whose line passes through the pole has no moment, whatever rounding says
         moment_mm = term.moment / drawn_at if abs(term.moment) > ROUNDING * largest else 0.0
         total += moment_mm
@@ -629,7 +646,7 @@ def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, 
             arm = f"{load_symbol(arm_names[term.name], text)} = {arm}"
         force = note.n(abs(term.force)) if term.image else "—"
         rows.append([load_symbol(term.name, text), point, force, arm, note.n(moment_mm)])
-    note.para(note.t(words.intro, sign=note.text["note_lever_sign"]))
+    note.para(note.t(words.intro, sign=note.text["note_lever_sign"], applied=_loads_applied(note, tabled)))
     for term in lever.terms:
         if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
             note.para(note.t("note_lever_block", name=load_symbol(term.name, text), link=term.link))
