@@ -89,20 +89,22 @@ class Lever:
                       if term.image and term.force != 0)
         return (*loads, (BALANCING_FORCE, self.balancing_image, self.balancing_force, 0j))
 
-    def arm_names(self, velocity: Plan, drawn_at: float, precision: float) -> dict[str, str]:
+    def arm_names(self, velocity: Plan, drawn_at: float, precision: float,
+                  standing: frozenset[str] | None = None) -> dict[str, str]:
         """The name of the arm of each force the lever of ``velocity`` names one for, drawn at μV ``drawn_at``
         ((m/s)/mm) to the drafting ``precision`` (mm): h1, h2, … in the order of :attr:`forces`, ``hb`` the balancing
         force's, one name for the forces whose lines are one line (:func:`shared_arms`), ``hb`` where Fb is among
         them.  ``hb`` is a key: the caller spells it as its locale writes it (``load_symbol``: hу in Russian).
 
-        Named are Fb and the forces whose terms stand in ΣMp (:meth:`standing`) and that are no rounding error beside
-        the others (:func:`~graphplan.forces.negligible`: the lever draws no arrow for one).  The force sheet letters
+        Named are Fb and the forces whose terms stand in ΣMp (:meth:`standing`, or ``standing`` where the caller has
+        worked it out for ``velocity`` already) and that are no rounding error beside the others
+        (:func:`~graphplan.forces.negligible`: the lever draws no arrow for one).  The force sheet letters
         the lever's arms by these names and the note writes each load's arm with them, so that the note's h2 is the
         sheet's; the scale is the one the lever is drawn at, since the drafting precision there decides which lines
         are one.
         """
         forces = self.forces
-        standing = self.standing(velocity) | {BALANCING_FORCE}
+        standing = (self.standing(velocity) if standing is None else standing) | {BALANCING_FORCE}
         named = [force for force in forces if force[0] in standing
                  and not negligible(force[2], [other for _, _, other, _ in forces])]
         names: dict[str, str] = {}

@@ -20,7 +20,7 @@ from shapely.geometry.base import BaseGeometry
 
 from ..forces import negligible
 from ..geometry import perpendicular_foot
-from ..lever import Lever, LeverTerm, turned
+from ..lever import BALANCING_ARM, BALANCING_FORCE, Lever, LeverTerm, turned
 from ..locale import load_symbol
 from ..memo import OwnedMemo
 from ..plans import Plan
@@ -212,6 +212,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     def shown(name: str) -> str:
         return load_symbol(name, text)
 
+    balancing_name = shown(BALANCING_FORCE)  # as its arrow is named: Fу in Russian
+
     def mm(letter: str) -> complex:
         return turned(velocity.points[letter]) / drawn_at
 
@@ -231,7 +233,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             frame.append(Polyline(tuple(hull.coords), _LEVER))
     named = [(term.name, term.image, term.force, LOAD, turned(term.shift) / drawn_at)
              for term in lever.terms if term.image and term.force != 0]
-    named.append(("Fb", lever.balancing_image, lever.balancing_force, BALANCING, 0j))
+    named.append((BALANCING_FORCE, lever.balancing_image, lever.balancing_force, BALANCING, 0j))
     scale = arrow_scale([force for _, _, force, _, _ in named], frame)
     arrows: list[Primitive] = []
     leaders: list[Primitive] = []
@@ -241,14 +243,15 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     arm_lengths: dict[str, float] = {}  # on the drawing, mm
     by_arm: dict[str, list[tuple[str, str]]] = {}  # each arm's loads in ΣMp, as (sign, name), in the order drawn
     moments = {term.name: term.moment for term in lever.terms}
-    standing = lever.standing(velocity) | {"Fb"}
+    standing = lever.standing(velocity) | {BALANCING_FORCE}
 
     def stands(term: LeverTerm) -> bool:
         return term.name in standing
 
     # One numbering of the arms, the note's too: at the scale drawn at, whose drafting precision decides which are one.
     arm_of = {name: load_symbol(arm, text) for name, arm in
-              lever.arm_names(velocity, drawn_at, sheet.mechanism.scene.drawing.drafting_precision).items()}
+              lever.arm_names(velocity, drawn_at, sheet.mechanism.scene.drawing.drafting_precision,
+                              standing=standing).items()}
     balancing = lever.balancing if len(standing) > 1 else 0.0
     undrawn: list[str] = []  # arms in the equation too short to draw, given under it
     load_points: dict[str, str] = {}  # each named load's point on the lever, where its arrow stands
@@ -289,7 +292,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         if name not in standing:
             continue
         arm = arm_of[name]
-        if name != "Fb":
+        if name != BALANCING_FORCE:
             by_arm.setdefault(arm, []).append((sign_mark(moments[name]), shown(name)))
         if arm in arm_lengths:
             # Its arm is drawn and named with the first load on its line: only the line is run on to its foot.
@@ -347,8 +350,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         taken = {load_points[anchor.text] for anchor in unnamed}
         # Fb's head is left out: drawn and named in its own colour, it is not taken for a load's.  An arrow left unnamed
         # keeps its head on the drawing, by which another's name reads as its.
-        heads = [anchor.at for anchor in anchors[:len(load_points)] if anchor.text != shown("Fb")]
-        lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != shown("Fb")
+        heads = [anchor.at for anchor in anchors[:len(load_points)] if anchor.text != balancing_name]
+        lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != balancing_name
                  and load_points[anchor.text] not in taken
                  and (label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
                       or _by_another_head(anchor, placed, heads, labels.leaders))]
@@ -357,7 +360,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             # among the loads at 3.5 mm) has one of its loads given under the lever, as a name lying on a line is.
             pressed = [group for group, anchor, placed in zip(groups, points, labels.texts[len(loads):], strict=False)
                        if label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
-            free = [anchor for anchor in loads if anchor.text != shown("Fb") and load_points[anchor.text] not in taken]
+            free = [anchor for anchor in loads
+                    if anchor.text != balancing_name and load_points[anchor.text] not in taken]
             lying = [anchor for anchor in free if any(load_points[anchor.text] in group for group in pressed)][:1]
             if pressed and not lying:
                 # Its own arrows already keep one unnamed: the name standing by its dot, in the room its letter needs,
@@ -377,7 +381,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     apart = too_short_lines(short, text, CAPTION_WIDTH_MM, words="arms_too_short")
     unnamed_at = wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
                            for anchor in unnamed])
-    parts.append(f"{sign_mark(-sum(moments[name] for name in standing - {'Fb'}))} {shown('Fb')}·{shown('hb')}")
+    parts.append(f"{sign_mark(-sum(moments[name] for name in standing - {BALANCING_FORCE}))} "
+                 f"{balancing_name}·{shown(BALANCING_ARM)}")
     equation = _leading(" ".join(parts))
     # Drawn turned as every lever is: a reader laying the velocity plan beside it must know which way.
     caption = [text["lever_title"], text["lever_turned"],
