@@ -57,6 +57,7 @@ from .rotor_lengths import (
     LengthsInMillimetres,
     bounding_cylinder,
     heaviest_rotor,
+    radii_are_eccentricities,
     rotor_length,
     solid_steel_reach,
 )
@@ -637,8 +638,9 @@ def _refuse_correction_beyond_rotor(result: BalancingResult, keys: tuple[str, ..
     the masses turn, R, over the masses' and planes' span, and no rotor that size, solid steel twice as large in
     radius and length, weighs more; a correction heavier than that is no part of it.  Where the masses outweigh it
     themselves, R is not yet the rotor's size: the radii are eccentricities (a rotor of one mass is often a heavy
-    disc 2 mm off its axis, which a correction radius of 1e-9 m gave a correction of 1e9 kg) or the masses are in
-    grams (warned of; their corrections follow them).  A rotor that holds them reaches at least as far as solid steel
+    disc 2 mm off its axis, which a correction radius of 1e-9 m gave a correction of 1e9 kg; not warned of, as
+    :func:`~graphplan.rotor_lengths.radii_are_eccentricities` tells them) or the masses are in grams (warned of; their
+    corrections follow them).  A rotor that holds them reaches at least as far as solid steel
     weighing them does (:func:`~graphplan.rotor_lengths.solid_steel_reach`), and is weighed at that size as any
     other: its corrections may weigh up to ROTOR_REACH³ times its masses.  The least radius told is one the check
     takes, found with the rotor's size at that radius."""
@@ -933,10 +935,11 @@ class MassesInGrams:
     """The rotor's masses weigh together more than solid steel filling a cylinder twice as large in radius as the
     farthest out a mass or a correction turns and twice as long as its masses and planes span along the axis
     (:func:`~graphplan.rotor_lengths.heaviest_rotor`), as masses typed in grams make them: 200 for 0.2 kg on a rotor
-    0.1 m across.
+    0.1 m across; read as grams, they lie within the radii they turn at
+    (:func:`~graphplan.rotor_lengths.radii_are_eccentricities`).
 
-    ``radius`` is that radius and ``radius_key`` where it is given (the span, where no correction radius is given and
-    the masses' radii, which may be eccentricities, are shorter); ``span`` the masses' and planes' span along the axis.
+    ``radius`` is that radius and ``radius_key`` where it is given (the span, where no correction radius gives the rim
+    and the masses' radii are shorter); ``span`` the masses' and planes' span along the axis.
     """
 
     masses: tuple[float, ...]
@@ -978,9 +981,13 @@ class MassesInGrams:
 def masses_in_grams(spec: BalancingSpec) -> MassesInGrams | None:
     """:class:`MassesInGrams` where two masses or more weigh together more than
     :func:`~graphplan.rotor_lengths.heaviest_rotor` of the rotor's radius (the farthest out a mass or a correction
-    turns) and its masses' and planes' span along the axis; else None.  One mass alone is not judged: its radius may be
-    a heavy disc's eccentricity, and nothing else gives the rotor's size; nor, without a correction radius, do the
-    masses' radii alone give the rotor's radius (they may all be eccentricities), which is then taken as its span."""
+    turns) and its masses' and planes' span along the axis, but typed in grams would lie within the radii they turn at;
+    else None.  Masses that even as grams would not are bodies round the axis, their radii eccentricities
+    (:func:`~graphplan.rotor_lengths.radii_are_eccentricities`: 500 kg discs 2 mm off their centres), and the scene
+    gives no radius of the rotor: their own is not in it, and a correction radius beside them may be a collar's on the
+    shaft.  One mass alone is not judged: its radius may be a heavy disc's eccentricity, and nothing else gives the
+    rotor's size; nor, without a correction radius, does the scene give the rim, which lumps may turn well inside:
+    the rotor's radius is then taken as at least its span."""
     if len(spec.masses) < 2:
         return None
     radii = [(mass.radius, f"balancing.masses[{k}].radius") for k, mass in enumerate(spec.masses)]
@@ -991,11 +998,15 @@ def masses_in_grams(spec: BalancingSpec) -> MassesInGrams | None:
     span = max(along) - min(along)
     radius, key = max(radii, key=lambda item: item[0])
     if not corrections and span > radius:
-        radius, key = span, ("taken as its span: no correction_radius is given, and the masses' radii may be "
-                             "eccentricities")
+        radius, key = span, ("taken as its span: no correction_radius is given, and the masses may turn well inside "
+                             "the rim")
     masses = tuple(mass.mass for mass in spec.masses)
     # A rotor of no size (every mass on its axis, in one plane) is told so (on_axis), not weighed.
     if not radius > 0 or not sum(masses) > heaviest_rotor(radius, span):
+        return None
+    # Grams explain masses too heavy for their radii only where, read as grams, they would lie within them: the
+    # refusal of a correction radius too small weighs the others as kg, discs off their centres.
+    if radii_are_eccentricities(sum(masses), span, max(mass.radius for mass in spec.masses)):
         return None
     return MassesInGrams(masses, radius, key, span)
 

@@ -63,11 +63,23 @@ THINNEST_DISC = 200.0
 # turn, not the rim, and a textbook's "mass" is often a whole disc off its centre, hence twice: Khurmi's four masses
 # of 1000 kg in one plane within 0.3 m of the axis, among the heaviest for their size of textbook exercises, fill a
 # fifth of it (5330 kg), his shaft's 1100 kg within 0.1 m of the axis over 0.7 m along it four fifths (1380 kg), the
-# rotor starter's 42 kg within 0.06 m over 0.22 m a quarter (156 kg).  Without a correction_radius the masses'
-# radii may all be eccentricities, discs keyed off their centres on a long shaft (500 kg each 2 mm off the axis),
-# which bound no rotor's radius: it is then taken as large as the span, 8·π·ρ·max(R, L)³.  A rotor of one mass gives
+# rotor starter's 42 kg within 0.06 m over 0.22 m a quarter (156 kg).  Where the masses' radii are eccentricities
+# (:func:`radii_are_eccentricities`), the scene gives no radius of the rotor at all and its masses are not weighed.
+# Without a correction_radius it gives no rim either, which lumps may turn well inside (Khurmi's shaft's at 0.06–0.08
+# m, corrected at 0.1 m): the rotor is then taken as large as the span, 8·π·ρ·max(R, L)³.  A rotor of one mass gives
 # it no bound at all: its radius may be a heavy disc's eccentricity (a 500 kg flywheel 2 mm off its axis).
 ROTOR_REACH = 2.0
+# Masses typed in grams are lumps fixed out where they turn (test masses, bolts, balancing weights), and a lump off the
+# axis lies within its radius of its centre: solid steel filling that circle over the rotor's length holds it, and a
+# rotor's lumps are far lighter still (the 200, 150 and 250 g of a rotor 0.3 m long, as steel, reach 9 mm from the
+# axis, well inside the 30–50 mm they turn at).  So read as grams, a thousandth of what they are typed as, the masses
+# of a slip reach as solid steel no farther from the axis than the farthest of them turns.  Masses that reach farther
+# even so are bodies round the axis whatever their unit, discs keyed off their centres, their radii eccentricities
+# that grams would not explain: two 500 kg discs 2 mm off their axis on a shaft 0.3 m long, as 1 kg of steel, reach
+# 11.6 mm.  Their own radius is not in the scene, nor is it a correction_radius beside them (0.01 m: a collar on the
+# shaft, or a hub, may carry the corrections), and the refusal of a correction radius too small weighs them as kg, at
+# the size that holds them (:func:`solid_steel_reach`).
+GRAMS_PER_KILOGRAM = 1000.0
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
@@ -107,6 +119,14 @@ def solid_steel_reach(mass: float, span: float) -> float:
     :func:`rotor_length` (so that :func:`heaviest_rotor` of that radius is ``ROTOR_REACH``³ times ``mass``)."""
     disc = (mass / solid_steel_cylinder(1.0, 1.0)) ** (1.0 / 3.0)
     return disc if disc >= span else math.sqrt(mass / solid_steel_cylinder(1.0, span))
+
+
+def radii_are_eccentricities(mass: float, span: float, farthest: float) -> bool:
+    """Whether masses weighing ``mass`` (kg) together over ``span`` (m) along the axis, the farthest of them turning
+    ``farthest`` (m) from it, are bodies round the axis even read as grams, their radii eccentricities: solid steel
+    weighing a thousandth of them reaches farther from the axis (:func:`solid_steel_reach`) than they turn
+    (:data:`GRAMS_PER_KILOGRAM`)."""
+    return solid_steel_reach(mass / GRAMS_PER_KILOGRAM, span) > farthest
 
 
 @dataclass(frozen=True)
@@ -197,8 +217,8 @@ class LengthsInMillimetres:
         return "; ".join(item.detail for item in self.found) + f": {asked}{unless}"
 
 
-__all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
+__all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "GRAMS_PER_KILOGRAM", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
            "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "ROTOR_REACH",
            "SOME_IN_MILLIMETRES", "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible",
-           "LengthsInMillimetres", "bounding_cylinder", "heaviest_rotor", "lightest_rotor", "rotor_length",
-           "solid_steel_reach"]
+           "LengthsInMillimetres", "bounding_cylinder", "heaviest_rotor", "lightest_rotor", "radii_are_eccentricities",
+           "rotor_length", "solid_steel_reach"]

@@ -482,7 +482,9 @@ def test_a_correction_radius_too_small_for_a_heavy_eccentric_rotor_is_refused_at
     its masses reaches at least as far as solid steel weighing them, and no rotor that size outweighs solid steel
     twice as large in radius and length, 2³ times its masses: the correction is refused at its key past that, with
     the least radius that keeps it within, which runs; so for two such discs on a 1 m shaft, each corrected in its own
-    plane.  Nothing is written."""
+    plane, and at that radius they are not told their masses look like grams: the refusal took them as kg, discs off
+    their centres, and typed in grams they would still outweigh their 2 mm radii (1 kg of solid steel over the 1 m
+    shaft reaches √(1 / (7850·π·1)) = 6.4 mm from the axis).  Nothing is written."""
     scene = _scene(tmp_path, f'[scene]\ntitle = "eccentric"\n[balancing]\nmasses = [ {masses} ]\n{planes}'
                              "correction_radius = 1e-9\n")
     told = _refused_by_run_and_check(tmp_path, capsys, scene, "balancing.correction_radius",
@@ -492,3 +494,4 @@ def test_a_correction_radius_too_small_for_a_heavy_eccentric_rotor_is_refused_at
     assert per_plane / (2 ** 3 * rotor_masses) <= least == pytest.approx(per_plane / (2 ** 3 * rotor_masses), rel=0.1)
     assert main(["check", str(_scene(tmp_path, scene.read_text(encoding="utf-8").replace(
         "correction_radius = 1e-9", f"correction_radius = {least!r}")))]) == 0
+    assert "grams typed for kg" not in capsys.readouterr().out

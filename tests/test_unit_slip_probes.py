@@ -183,6 +183,43 @@ def test_eccentric_discs_on_a_shaft_without_a_correction_radius_are_not_told(tmp
         assert not _in_grams(results)
 
 
+def _steel_reach_over_the_shaft(mass: float) -> float:
+    """How far from the axis solid steel of ``mass`` (kg) reaches as a cylinder as long as the shaft, 0.3 m."""
+    return math.sqrt(mass / (STEEL * math.pi * 0.3))
+
+
+@pytest.mark.parametrize(("masses", "radii"), [((500.0, 500.0), (0.002, 0.002)),
+                                              ((500.0, 400.0, 500.0), (0.002, 0.003, 0.002))],
+                         ids=["two-discs", "three-discs"])
+def test_heavy_eccentric_discs_corrected_near_the_axis_are_not_told(tmp_path, capsys, masses, radii) -> None:
+    """Discs of 500 kg keyed 2–3 mm off their centres, corrected at 0.01 m (on a collar of the shaft: their own
+    radius is not in the scene), were told they were grams: as kg they outweigh the cylinder the radii give,
+    π·(0.02 m)²·0.6 m·ρ = 5.92 kg, but typed in grams they would too, for no lump fixed out where it turns is larger
+    than the circle it turns in: 1 or 1.4 kg of solid steel over the shaft's 0.3 m reaches 11.6 or 13.8 mm from the
+    axis, past the 2–3 mm they turn at.  Their radii are eccentricities, which grams would not explain."""
+    assert sum(masses) > math.pi * 0.02 ** 2 * 0.6 * STEEL
+    assert _steel_reach_over_the_shaft(sum(masses) / 1000) > max(radii)
+    told, results = _run(tmp_path, _shaft(masses, radii, 0.01), capsys, "balancing")
+    assert not _in_grams(results) and "grams typed for kg" not in told
+
+
+# At radii to 0.01 m over 0.3 m, corrected at 0.01 m, masses of 700 and 800 (kg) both outweigh the cylinder the radii
+# give, π·(0.02 m)²·0.6 m·ρ = 5.92 kg.  As grams, solid steel filling the circle the farthest turns in over the shaft,
+# π·(0.01 m)²·0.3 m·ρ = 0.740 kg, holds 0.7 kg (lumps fixed out where they turn, a slip) but not 0.8 kg (bodies round
+# the axis whatever the unit, their radii eccentricities).
+LUMPS_AT_ONE_CENTIMETRE = math.pi * 0.01 ** 2 * 0.3 * STEEL  # 0.740 kg
+
+
+@pytest.mark.parametrize(("masses", "told"), [((200.0, 300.0, 200.0), True), ((250.0, 300.0, 250.0), False)])
+def test_masses_are_told_grams_only_where_as_grams_they_lie_within_their_radii(tmp_path, capsys, masses,
+                                                                               told) -> None:
+    assert sum(masses) > math.pi * 0.02 ** 2 * 0.6 * STEEL
+    assert (sum(masses) / 1000 <= LUMPS_AT_ONE_CENTIMETRE) == told
+    assert (_steel_reach_over_the_shaft(sum(masses) / 1000) <= 0.01) == told
+    _, results = _run(tmp_path, _shaft(masses, (0.01, 0.008, 0.01), 0.01), capsys, "balancing")
+    assert bool(_in_grams(results)) == told
+
+
 # --- a crank's mass in grams, no inertia given ---------------------------------------------------------------------
 
 def _crank_of_a_tenth(mass: float) -> str:
