@@ -88,7 +88,7 @@ class Panel:
     # leaves its title block's scale box empty.
     to_scale: bool = True
     # μV of the Zhukovsky's lever on a force sheet as it is drawn here (a small sheet draws it smaller than the
-    # plan's enlarged lever): the note works the lever at this scale.
+    # plan's enlarged lever); the note works the lever at forces_N.svg's scale, the drawing laid out alone.
     lever_scale: float | None = None
     # True where the parts are a sequence read in its order (the velocity plans of positions 1, 2, 3, … by rows):
     # they are never put tallest or largest first to save a sheet.

@@ -619,7 +619,8 @@ def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, 
     name, unit = force_report.balancing_symbol(note.analysis)
     driver = note.mechanism.driver
     velocity = plan.velocity
-    # As the force sheet beside the note draws it: a small sheet may draw it smaller than enlarged.
+    # As forces_N.svg, the figure the note shows, draws it: laid out alone whatever the sheet format (7da53bfe), so
+    # that --sheet leaves the note as it is; a small course sheet may draw its own copy smaller.
     drawn_at = note.lever_scales.get(drawing) or enlarged_lever_scale(velocity, lever) or velocity.scale
     # Each arm by the name the sheet's lever letters it (h1, h2, hb), a shared arm's in each of its loads' rows; a
     # load the lever names no arm for (one with no moment, at the pole) keeps its length alone.
