@@ -64,6 +64,9 @@ from .primitives import to_xy as _xy
 # beside it (a name's box is 4.6 mm high, kept 0.8 mm off another's), where at BESIDE_MM the two arrows read as one
 # and one name stood by the other's head.
 LEVER_BESIDE_MM = 6.0
+# The lever's field on a force sheet, which its layers are named after (lever-plan, lever-arm-G3): a course sheet
+# tells the part that holds the lever by them.
+LEVER_FIELD = "lever"
 # A load's arrow on the lever passes no other point's dot nearer than this (mm) where another way of drawing it
 # passes none: a head by another point reads as a load at that point.
 POINT_CLEAR_MM = 2.5
@@ -398,7 +401,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
              balancing_line(sheet, balancing, "balancing_by_lever", named=False),
              balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
              text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
-    return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
+    return Drawing(LEVER_FIELD, [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
                              Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
                              Layer("lever-labels", labels.texts)], (*caption, *under),
                    run_on=short_run_on(short, apart, text, after=len(under)))

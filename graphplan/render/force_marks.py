@@ -52,7 +52,7 @@ from .labels import (
     shapes_digest,
     text_box,
 )
-from .numerals import significant
+from .numerals import scale_factor, significant
 from .plans import CAPTION_SIZE, ZERO_MM
 from .primitives import Arrow, Polyline, Primitive, Stroke, Text, bounds_of, svg_id
 from .primitives import to_complex as _c
@@ -148,7 +148,14 @@ class ForceSheet:
         """The line of μV the lever is drawn at."""
         if self.lever_scale is None:
             return self.velocity_scale
-        return self.text["velocity_scale"].format(value=format_scale(self.lever_scale))
+        return self.text["velocity_scale"].format(value=written_lever_scale(self.lever_scale, self.velocity.scale))
+
+
+def written_lever_scale(scale: float, plan_scale: float) -> str:
+    """μV a lever drawn at ``scale`` is written at on its force sheet: its velocity plan's ``plan_scale`` as the plan
+    writes it (0.07854), a standard scale of its own whole (0.04); the note writes a lever's μV as the sheet it
+    tells of does."""
+    return scale_factor(scale) if scale == plan_scale else format_scale(scale)
 
 
 def draws_larger(scale: float, than: float) -> bool:

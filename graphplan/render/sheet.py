@@ -59,6 +59,7 @@ from .drawings import (
     with_length_scale,
 )
 from .dynamics import TITLE_LAYER
+from .force_lever import LEVER_FIELD
 from .force_rows import HEADING_LAYER, has_heading
 from .force_sheet_choice import (
     CutChoice,
@@ -1322,6 +1323,47 @@ def larger_polygons(panels: CoursePanels, sheets: Sequence[Sheet]) -> dict[int, 
                     sheet.number, dict(drawn[name].polygon_scales), friction,
                     {label: (scale, whole) for label, scale, whole in drawn[name].body_arrows}))
     return {number: tuple(each) for number, each in found.items()}
+
+
+@dataclass(frozen=True)
+class SheetLever:
+    """A force sheet's Zhukovsky's lever as a course sheet draws it: the force sheet (``forces-2``,
+    ``forces-friction-2``), the number of the sheet that holds the lever and the μV it is drawn at there, which a
+    small sheet makes coarser than the force sheet's own (:attr:`~graphplan.render.packing.Panel.lever_scale`)."""
+
+    drawing: str
+    sheet: int
+    scale: float
+
+
+def sheet_levers(panels: CoursePanels, sheets: Sequence[Sheet]) -> list[SheetLever]:
+    """Each lever the course ``sheets`` draw, read off the packing that laid them out: the panel placed on a sheet
+    that holds the lever's layers (the force sheet whole, one of its parts, or a part's drawing standing apart), and
+    the μV its force sheet's panel draws the lever at."""
+    wholes = [whole.name for whole in panels.whole_forces]
+    placed: dict[str, tuple[Panel, Panel]] = {}
+
+    def index(drawn: Panel, part: Panel) -> None:
+        placed[part.name] = (drawn, part)
+        for inner in part.parts:
+            index(drawn, inner)
+
+    for drawn in panels.forces:
+        if drawn.lever_scale is not None:
+            index(drawn, drawn)
+    found = []
+    for sheet in sheets:
+        for name in sheet.panels:
+            if name not in placed:
+                continue
+            drawn, part = placed[name]
+            if not any(layer.name == LEVER_FIELD or layer.name.startswith(LEVER_FIELD + "-") for layer in part.layers):
+                continue
+            # A force sheet's parts are named after it (forces-2-3), and so are their drawings (forces-2-3-lever).
+            whole = max((whole for whole in wholes if drawn.name == whole or drawn.name.startswith(whole + "-")),
+                        key=len)
+            found.append(SheetLever(whole, sheet.number, drawn.lever_scale))
+    return found
 
 
 def machine_sheets(dynamics: Sequence[Panel], balancing: Sequence[Panel], sheet: str, locale: str,
