@@ -32,6 +32,7 @@ from .render.primitives import Layer, in_language
 if TYPE_CHECKING:
     from .analysis import Analysis
     from .misreadings import SheetPolygons
+    from .render.sheet import SheetLever
     from .scene import Scene
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
@@ -67,6 +68,9 @@ class Drawing:
     # free, and the sheet with friction's polygons and arrows, where a reaction was read by hand
     # (:func:`_record_drawings`).
     larger_polygons: tuple[tuple[int, SheetPolygons], ...] = ()
+    # The levers a course sheet draws (:func:`~graphplan.render.sheet.sheet_levers`), each at the μV it stands at
+    # there, which a small sheet makes coarser than its force sheet's: the note tells a reader measuring them.
+    levers: tuple[SheetLever, ...] = ()
 
 
 def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str = "drawing.sheet") -> str | None:
@@ -330,15 +334,17 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         layers = list(laid_out.layers) if laid_out else _load_diagram_layers(analysis)
         found.append(Drawing("load_diagrams", layers))
     if panels is not None:
-        from .render.sheet import course_sheets, larger_polygons
+        from .render.sheet import course_sheets, larger_polygons, sheet_levers
 
         tell("drawing the sheets")
         sheets = course_sheets(analysis, panels=panels)
         larger = larger_polygons(panels, sheets)
+        levers = sheet_levers(panels, sheets)
         for sheet in sheets:
             found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size, larger_polygons=tuple(
                 (number, polygons) for number, drawn in larger.items() for polygons in drawn
-                if polygons.sheet == sheet.number)))
+                if polygons.sheet == sheet.number), levers=tuple(lever for lever in levers
+                                                                  if lever.sheet == sheet.number)))
     if "velocity" in pieces and analysis.velocity_plans:
         tell("drawing the velocity plans of the positions")
         laid_out = panels.named("velocity-plans") if panels else None
@@ -386,6 +392,11 @@ def _drawn_alone(panels, name: str):
     fields), and the file on its own is the same whatever the sheets' format, or without them."""
     laid_out = panels.named(name) if panels is not None else None
     return laid_out if laid_out is not None and laid_out.drawn_alone else None
+
+
+def _file_alone(panel: str) -> str:
+    """The file a force sheet's panel (``forces-friction-2``) is written in on its own (``forces_friction_2.svg``)."""
+    return f"{panel.replace('-', '_')}.svg"
 
 
 def _load_diagram_layers(analysis: Analysis) -> list[Layer]:
@@ -538,12 +549,14 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
 def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
            dynamics: MachineDynamics | None = None, pictures: tuple[str, ...] = (),
            lever_scales: Mapping[str, float] | None = None,
-           shown_in_parts: Mapping[str, tuple[str, ...]] | None = None) -> dict[str, str]:
+           shown_in_parts: Mapping[str, tuple[str, ...]] | None = None,
+           sheet_levers: Mapping[str, tuple[int, float]] | None = None) -> dict[str, str]:
     """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its sections
     on the machine's ``dynamics``, its rotor's balancing and its vibration when the run has them, and the
     drawings and plots written beside it that ``pictures`` names, each force sheet's lever worked at the μV it is
-    drawn at, ``lever_scales``; the diagrams each part of a drawing cut for it shows, ``shown_in_parts``), each in
-    Markdown and LaTeX (the note also in HTML).  A scene without a linkage has only the note."""
+    drawn at, ``lever_scales``, and the course sheet and μV each is drawn at there, ``sheet_levers``; the diagrams
+    each part of a drawing cut for it shows, ``shown_in_parts``), each in Markdown and LaTeX (the note also in
+    HTML).  A scene without a linkage has only the note."""
     files: dict[str, str] = {}
     if not {"note", "errors", "forces"} & set(pieces):
         return files  # no text asked for: the LaTeX writer and its Markdown parser stay unloaded
@@ -555,7 +568,8 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
-        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales, shown_in_parts)
+        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales, shown_in_parts,
+                                         sheet_levers)
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
         files["note.tex"] = latex_document(files["note.md"], scene.title, locale, verbatim)
     if analysis is None:
@@ -839,6 +853,9 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     shown_in_parts = {f"{drawing.stem}.svg": drawing.shows for drawing in made if drawing.shows}
     if made:
         say("writing the drawings")
+    # By the force sheet's file, whether it is written or not: the note works its lever at that file's μV.
+    sheet_levers = {_file_alone(lever.drawing): (lever.sheet, lever.scale) for drawing in made
+                    for lever in drawing.levers}
     for drawing in made:
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
         if drawing.lever_scale is not None:
@@ -860,7 +877,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if {"note", "errors", "forces"} & set(pieces):
         say("writing the note and the tables" if "note" in pieces else "writing the tables")
     found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures), lever_scales=lever_scales,
-                        shown_in_parts=shown_in_parts))
+                        shown_in_parts=shown_in_parts, sheet_levers=sheet_levers))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 

@@ -22,11 +22,14 @@ NOTE_ARM = re.compile(r"^(?:(?P<arm>h\S*) = )?(?P<length>\d+(?:[.,]\d+)?)")
 PATH_POINT = re.compile(r"[ML](-?[\d.]+),(-?[\d.]+)")
 
 
-def sheet_arms(svg: Path) -> tuple[dict[str, str], set[str], dict[str, float]]:
+def sheet_arms(svg: Path, panel: str = "") -> tuple[dict[str, str], set[str], dict[str, float]]:
     """The arm ΣMp on the sheet's lever names for each load (Fb's among them), the arm names lettered on the lever or
-    given under it, and the length (mm) of each arm drawn from the pole, by the id of its load's layer."""
+    given under it, and the length (mm) of each arm drawn from the pole, by the id of its load's layer; on a course
+    sheet, of the lever in its drawing ``panel`` (``forces-2-3``), whose name starts its layers' ids there."""
     root = ElementTree.parse(svg).getroot()
-    layers = {layer.get("id"): layer for layer in root.iter(f"{SVG}g")}
+    start = f"{panel}-" if panel else ""
+    layers = {layer.get("id").removeprefix(start): layer for layer in root.iter(f"{SVG}g")
+              if (layer.get("id") or "").startswith(start)}
     caption = " ".join("".join(text.itertext()) for text in layers["lever-caption"].findall(f"{SVG}text"))
     equation = re.search(r"ΣMp: (.*?) = 0", caption)
     assert equation, f"{svg.name}: no ΣMp under the lever: {caption}"

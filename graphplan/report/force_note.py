@@ -24,10 +24,10 @@ from ..locale import Count, load_symbol, load_symbols_in
 from ..mechanism import Mechanism
 from ..plans import Plan
 from ..render.force_lever import enlarged_lever_scale
+from ..render.force_marks import written_lever_scale
 from ..render.force_polygons import too_short_to_draw
 from ..render.numerals import power_of_ten
 from ..render.plans import ZERO_MM
-from ..scales import format_scale
 from ..wording import balancing_load
 from . import forces as force_report
 from .forces import ROUNDING
@@ -40,6 +40,7 @@ class Writer(SectionWriter, Protocol):
     analysis: Analysis
     mechanism: Mechanism
     lever_scales: Mapping[str, float]
+    sheet_levers: Mapping[str, tuple[int, float]]
 
     def captioned(self, caption: str, table_lines: list[str]) -> None: ...
     def product(self, *factors: str) -> str: ...
@@ -610,6 +611,22 @@ def _loads_applied(note: Writer, tabled: list[LeverTerm]) -> str:
     return note.t("note_lever_applied", loads=note.text["semicolon"].join(clauses)) if clauses else ""
 
 
+def _on_course_sheet(note: Writer, drawing: str, drawn_at: float, plan_scale: float) -> None:
+    """Where a course sheet draws the lever of the force sheet ``drawing`` at another μV than ``drawn_at``, the one
+    the note works it at (a small sheet draws it coarser to fit), which sheet, its μV there, and the factor that
+    turns the table's arms into those a reader measures on that sheet."""
+    found = note.sheet_levers.get(drawing)
+    if found is None:
+        return
+    sheet, scale = found
+    if math.isclose(scale, drawn_at, rel_tol=1e-9):
+        return
+    # Both μV as the drawings write them, so that the ratio reads off the two captions.
+    worked, there = (written_lever_scale(value, plan_scale).replace(".", note.mark) for value in (drawn_at, scale))
+    note.para(note.t("note_lever_on_sheet", sheet=sheet, scale=note.text["velocity_scale"].format(value=there),
+                     ratio=f"{worked}/{there}", factor=note.n(drawn_at / scale, 4)))
+
+
 def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, polygons: float,
                   words: LeverWords) -> float:
     """Zhukovsky's ``lever`` of ``plan`` worked as the force sheet ``drawing`` draws it: the table of its loads'
@@ -620,7 +637,8 @@ def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, 
     driver = note.mechanism.driver
     velocity = plan.velocity
     # As forces_N.svg, the figure the note shows, draws it: laid out alone whatever the sheet format (7da53bfe), so
-    # that --sheet leaves the note as it is; a small course sheet may draw its own copy smaller.
+    # that --sheet leaves the table as it is; a small course sheet may draw its own copy smaller, which the sentence
+    # after the table tells (:func:`_on_course_sheet`).
     drawn_at = note.lever_scales.get(drawing) or enlarged_lever_scale(velocity, lever) or velocity.scale
     # Each arm by the name the sheet's lever letters it (h1, h2, hb), a shared arm's in each of its loads' rows; a
     # load the lever names no arm for (one with no moment, at the pole) keeps its length alone.
@@ -652,11 +670,12 @@ def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, 
         if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
             note.para(note.t("note_lever_block", name=load_symbol(term.name, text), link=term.link))
     if drawn_at != velocity.scale:
-        scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", note.mark))
+        scale = text["velocity_scale"].format(value=written_lever_scale(drawn_at, velocity.scale).replace(".", note.mark))
         note.para(note.t("note_lever_scale", scale=scale))
     header = [note.t("column_force"), note.t("column_point"), f"F, {text['newton']}",
               f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
     note.table(note.t(words.table, number=plan.number), header, rows, "llrrr")
+    _on_course_sheet(note, drawing, drawn_at, velocity.scale)
     pa = abs(velocity.value(driver.joint)) / drawn_at
     segment = note.segment(velocity, "p", velocity.images[driver.joint])
     force = abs(total) / pa if pa else math.nan

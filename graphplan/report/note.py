@@ -80,7 +80,8 @@ _ROMAN = {1: "I", 2: "II", 3: "III"}
 
 def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None,
                   figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None,
-                  shown_in_parts: Mapping[str, Sequence[str]] | None = None) -> str:
+                  shown_in_parts: Mapping[str, Sequence[str]] | None = None,
+                  sheet_levers: Mapping[str, tuple[int, float]] | None = None) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.machine_dynamics.MachineDynamics`) adds the section on the
@@ -90,10 +91,12 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     ``figures`` names the drawings and plots written beside the note (``plan_2.svg``): each stands
     in the section it illustrates, numbered, its caption under it; ``lever_scales`` the μV each force sheet's
     lever is drawn at there where a small sheet draws it at its own (``forces_5.svg``: 0.01); ``shown_in_parts`` the
-    headings of the diagrams a part of a figure holds (``dynamics-2.svg``), which its caption names.
+    headings of the diagrams a part of a figure holds (``dynamics-2.svg``), which its caption names; ``sheet_levers``
+    the course sheet that draws each force sheet's lever and the μV there (``forces_5.svg``: sheet 12, 0.02), told
+    after the lever's table where it is not the μV the note works it at.
     """
     note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures),
-                 lever_scales=dict(lever_scales or {}),
+                 lever_scales=dict(lever_scales or {}), sheet_levers=dict(sheet_levers or {}),
                  shown_in_parts={name: tuple(shown) for name, shown in (shown_in_parts or {}).items()})
     note.write()
     return raised("\n".join(note.lines).rstrip("\n") + "\n")
@@ -168,6 +171,8 @@ class _Note:
     figures_shown: int = 0
     # μV of each force sheet's lever where the figure beside the note draws it at its own (``forces_5.svg``).
     lever_scales: Mapping[str, float] = field(default_factory=dict)
+    # The course sheet that draws each force sheet's lever, and its μV there (``forces_5.svg``: sheet 12, 0.02).
+    sheet_levers: Mapping[str, tuple[int, float]] = field(default_factory=dict)
     # The headings of the diagrams each part of a figure shows (``dynamics-2.svg``), named in its caption.
     shown_in_parts: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     # The symbols a sentence has said what they are (A4, lCA4), each defined once, where it is first used.
