@@ -58,6 +58,10 @@ class Anchor:
     # A point and a distance (mm) the label's box keeps beyond wherever that costs less than lines covered
     # (``KEPT_OFF``): a lever's pole, in whose reach an arm's name is read among the loads' names there.  None: none.
     keep_off: tuple[tuple[float, float], float] | None = None
+    # Which of ``place_labels``' shafts (their indices among its obstacles) are lines of the link the point lies on: a
+    # leader across one still names a point of that link, crossing it as an ordinary line (a centre of mass inside a
+    # triangular link, lettered outside it).
+    own_lines: tuple[int, ...] = ()
     # How far the symbol drawn round the point reaches from it across its narrower side (mm): a slider block's half
     # height and half its outline's stroke.  Its spots stand that much farther out, a label beside them read as
     # naming the point without a leader, as a draughtsman letters a block's pin beside the block: the rings from the
@@ -325,7 +329,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     costs as much as two leaders crossing (:data:`SHAFT_CROSSED` lines),
     for a name led across a load's arrow reads as naming that load; such
     a spot counts as a line covered, and is reached out to only by a label
-    whose name would lie on a line otherwise.
+    whose name would lie on a line otherwise.  A mechanism's links are
+    given so too (:func:`place_breaking_thin_lines`' ``links``): a letter
+    led across a link reads as naming a point of it.
 
     ``leaders_apart`` counts a leader that runs beside a drawn line's ink,
     nearly along it, as a line covered (:data:`BESIDE_SPACE`): beside a
@@ -391,11 +397,22 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         hit, shaft = shaft_tree.query(_to_the_box(lines), predicate="intersects")
         table[leaders_from + hit, shafts_met[shaft]] = True
 
-    def covered(table: np.ndarray, leaders_from: int) -> np.ndarray:
+    def others_shafts(index: int) -> np.ndarray:
+        """Which of the shafts (``shafts_met``) a leader from the point of ``index`` reads as naming: all but the lines
+        of its own link (``Anchor.own_lines``)."""
+        return ~np.isin(shafts_met, anchors[index].own_lines)
+
+    def covered(table: np.ndarray, leaders_from: int, index: int) -> np.ndarray:
         """What the drawn shapes each shape of ``table`` (:func:`met`'s) meets weigh together: those before
-        ``leaders_from`` covering them, the leaders after it crossing them (``crossed_weights``).  The weights are
-        whole numbers, so their sums are exact in any order."""
-        return np.concatenate((table[:leaders_from] @ weights, table[leaders_from:] @ crossed_weights))
+        ``leaders_from`` covering them, the leaders after it (from the point of ``index``) crossing them
+        (``crossed_weights``, but its own link's lines as ordinary ones).  The weights are whole numbers, so their
+        sums are exact in any order."""
+        crossed = crossed_weights
+        if anchors[index].own_lines:
+            crossed = crossed_weights.copy()
+            own = shafts_met[~others_shafts(index)]
+            crossed[own] = weights[own]
+        return np.concatenate((table[:leaders_from] @ weights, table[leaders_from:] @ crossed))
 
     def others_than(placed: dict[int, BaseGeometry], own: int) -> tuple[np.ndarray, np.ndarray]:
         """The shapes of ``placed`` but ``own``'s, and their bounds: found once for the boxes and the leaders of all
@@ -480,7 +497,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # What the boxes and the leaders cover, in one query of the tree.
         table = met(np.concatenate((shapes, lines)))
         across_gap(table, lines, len(shapes))
-        covers = covered(table, len(shapes))
+        covers = covered(table, len(shapes), index)
         cost = COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         # The leader says which point the label names: standing near a neighbour misleads less.
         cost[beside] += MISLEADING * misleading[beside]
@@ -493,7 +510,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         covering = covers[:len(shapes)].copy()
         # A leader across a load's arrow counts as a line covered, as its name on the arrow would: the label is moved
         # off it, or reaches out, as one lying on a line is (``letter``).
-        covering[led] += table[len(shapes):, shafts_met].sum(axis=1)
+        covering[led] += table[len(shapes):, shafts_met[others_shafts(index)]].sum(axis=1)
         # One run beside a line (where the caller asks) as one on it.
         beside_a_line = runs_beside(lines)
         cost[led[beside_a_line]] += COVER
@@ -595,7 +612,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # what its box covers alone.
         across = 0.0
         if index in leader_lines and len(shafts_met):
-            across = float(shapely.intersects(_to_the_box(np.array([leader_lines[index]]))[0], fixed_shafts).sum())
+            across = float(shapely.intersects(_to_the_box(np.array([leader_lines[index]]))[0],
+                                              fixed_shafts[others_shafts(index)]).sum())
         # And whether it stands within its anchor's ``keep_off``: what, with a line covered, sends it reaching out.
         kept_off = bool(_kept_off(anchor, candidates[best:best + 1], ~beside[best:best + 1])[0])
         where[index] = (kind, best, float(spot.covering[best]), float(spot.covering[best]) - across, kept_off)
@@ -776,12 +794,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         shapes = shapely.box(*candidates.T)
         table = met(np.concatenate((shapes, lines)))
         across_gap(table, lines, len(shapes))
-        covers = covered(table, len(shapes))
+        covers = covered(table, len(shapes), index)
         usable = covers[:len(shapes)] == 0
         # Which spots' leaders cross a load's arrow, reading as part of it or as naming its load: not clear either
         # unless nothing else is (:func:`reachable`).
         across = np.zeros(len(candidates), dtype=bool)
-        across[led] = table[len(shapes):, shafts_met].any(axis=1)
+        across[led] = table[len(shapes):, shafts_met[others_shafts(index)]].any(axis=1)
         # A long name set off obliquely reaches back over its own point: beside it already, with no leader to draw.
         usable[led] &= _box_distance(led_boxes, led_points) > 0.0
         usable &= ~_kept_off(anchor, candidates, is_led)
@@ -1308,7 +1326,8 @@ def open_direction(at: tuple[float, float], items: Sequence[Primitive], default:
 
 def place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], drawn: list[Primitive],
                               inked: list[Primitive], ink: list[BaseGeometry], number_leaders: list[Polyline],
-                              numbers: list[Text], pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
+                              numbers: list[Text], pins: list[BaseGeometry],
+                              links: Sequence[BaseGeometry] = ()) -> tuple[Placement, list[Text]]:
     """The labels placed clear of the drawn lines, and those of them that the thin lines ``every`` break under
     (:func:`broken_under`): the plan of positions' letters and numbers (``every``: the other positions' thin
     outlines) and the plan sheet's mechanism's (the frame's hatching and guides, the run-on lines to Assur's points).
@@ -1332,11 +1351,20 @@ def place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dra
     number: set farther out on a leader it was read as naming something else.  Those labels are placed again
     without the thin lines, then the rest round them; their leaders, which the thin lines are not broken under, kept
     from running beside those lines all the same (the Scotch yoke's O was led out along the thin line of a position
-    of its rod)."""
-    obstacles = obstacles_of(without(drawn, inked) + number_leaders) + ink + pins
+    of its rod).
+
+    ``links`` are the links' lines as inked (not among ``ink``), which a leader crosses only where no spot near its
+    point lets it keep off them (``place_labels``' ``shafts``): a letter led across a link reads as naming a point of
+    that link, as the triad's O, led up over the coupler that passes just above the crank's pivot, did.  They stand
+    first among the obstacles, numbered so for the anchors' ``own_lines``: those of the point's own link it crosses as
+    any line."""
+    links = list(links)
+    crossed = [True] * len(links)
+    obstacles = links + obstacles_of(without(drawn, inked) + number_leaders) + ink + pins
     first = _each_in_its_own_direction(
-        remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False, leaders_apart=True),
-        anchors, obstacles, numbers)
+        remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False, leaders_apart=True,
+                   shafts=crossed),
+        anchors, obstacles, numbers, crossed)
     lines = [shape for shape in obstacles_of(drawn + number_leaders + list(first.leaders))
              if shape.geom_type == "LineString"]
     tree = STRtree(lines)
@@ -1345,12 +1373,12 @@ def place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dra
     if not breaking:
         return first, []
     over = remembered(place_labels, [anchors[index] for index in breaking],
-                      obstacles_of(without(drawn, breakable(every) + inked) + number_leaders) + ink + pins,
-                      standing=numbers, leaders_apart=obstacles_of(breakable(every)))
+                      links + obstacles_of(without(drawn, breakable(every) + inked) + number_leaders) + ink + pins,
+                      standing=numbers, leaders_apart=obstacles_of(breakable(every)), shafts=crossed)
     rest = [index for index in range(len(anchors)) if index not in breaking]
     others = remembered(place_labels, [anchors[index] for index in rest],
                         obstacles + obstacles_of(list(over.leaders)), standing=[*numbers, *over.texts],
-                        leaders_apart=True)
+                        leaders_apart=True, shafts=crossed)
     texts = dict(zip(breaking, over.texts)) | dict(zip(rest, others.texts))
     return Placement(tuple(texts[index] for index in range(len(anchors))), over.leaders + others.leaders), \
         list(over.texts)
@@ -1364,7 +1392,7 @@ _SHADOW_MM = 60.0
 
 
 def _each_in_its_own_direction(placement: Placement, anchors: list[Anchor], obstacles: list[BaseGeometry],
-                               standing: list[Text]) -> Placement:
+                               standing: list[Text], shafts: Sequence[bool] = ()) -> Placement:
     """``placement`` with each label that stands, seen from its point, behind or in front of another label of the same
     point (their directions from it overlapping, or the line from the point to one running within a letter's height
     of the other) placed again alone, out of the others' shadows, where a spot clear of everything is: the leader to
@@ -1388,7 +1416,7 @@ def _each_in_its_own_direction(placement: Placement, anchors: list[Anchor], obst
             kept_off = [*obstacles, *obstacles_of(around), *shadows]
             again = remembered(place_labels, [anchors[index]], kept_off,
                                standing=[*standing, *(text for k, text in enumerate(texts) if k != index)],
-                               reach_farther=False, leaders_apart=True)
+                               reach_farther=False, leaders_apart=True, shafts=shafts)
             (moved,) = again.texts
             box = text_box(moved)
             if (any(box.intersects(shape) for shape in kept_off)

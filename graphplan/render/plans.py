@@ -314,7 +314,13 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     # Each link's lines alone, which the curved arrows of the other links keep clear of.
     link_lines = {number: link_outlines(motion, index, {number: names}, paper, _LINK)
                   for number, names in outlines.items()}
-    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded, pins, link_lines, marks)
+    # The links' lines, in the order they are given to the placer first among its obstacles, and which of them are each
+    # link's: a letter led across a link reads as naming a point of it, unless that link is the point's own.
+    lines_of_links = [(number, item) for number, items in link_lines.items() for item in items
+                      if isinstance(item, Polyline) and not item.fill]
+    own_lines = {number: tuple(k for k, (owner, _) in enumerate(lines_of_links) if owner == number)
+                 for number in link_lines}
+    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded, pins, link_lines, marks, own_lines)
     special, special_at = _special_points(sheet.velocity, where, paper)
     marks += special
     drawn = loaded + links + frame + marks + senses
@@ -322,7 +328,10 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     names = [name for name in motion.points if any(name in on for on in mechanism.fixed_on.values())]
     blocked = block_pins(motion)
     anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn),
-                      symbol_mm=BLOCK_REACH_MM if name in blocked else 0.0) for name in names]
+                      symbol_mm=BLOCK_REACH_MM if name in blocked else 0.0,
+                      own_lines=tuple(sorted(k for number, on in mechanism.fixed_on.items() if name in on
+                                             for k in own_lines.get(number, ()))))
+               for name in names]
     anchors += [Anchor(paper(r), name, LETTER_SIZE, open_direction(paper(r), drawn)) for name, r in special_at.items()]
     # As the plan of positions letters its bold extremes: clear of the ink of the links, the springs and cylinders,
     # the frame's pivots and the senses' arrows, as wide as each is drawn (kept off their middles alone, the slotted
@@ -330,10 +339,14 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     # and an ω on the arrow of a point's velocity), and where the thin lines (the ground's hatching, a guide's line,
     # the run-on lines to Assur's points) leave a letter no spot by its point, set there all the same with those
     # lines broken under it, not pushed out on a leader.
+    # A letter is led across no other link's line where a spot near its point keeps it off them (the triad's O led up
+    # over the coupler passing just above the crank's pivot read as naming a point of the coupler).
     thin = breakable(frame) + breakable(special)
     bold = without(drawn, thin + marks)
-    ink = ink_of(bold, shafts_inked=True)
-    labels, breaking = place_breaking_thin_lines(anchors + turn_anchors, thin, drawn, bold, ink, [], [], [])
+    crossable = [item for _, item in lines_of_links]
+    ink = ink_of([item for item in bold if item not in crossable], shafts_inked=True)
+    labels, breaking = place_breaking_thin_lines(anchors + turn_anchors, thin, drawn, bold, ink, [], [], [],
+                                                 links=ink_of(crossable))
     frame = broken_under(frame, breaking, thin)
     marks = broken_under(marks, breaking, thin)
     # Under the frame and the links: their pins stand over the ends of the springs and cylinders.
@@ -363,7 +376,7 @@ def _special_points(velocity: Plan, where: Callable[[str], complex],
 
 def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[str], complex],
             paper: Paper, frame: list[Primitive], pins: list[Primitive], link_lines: Mapping[int, list[Primitive]],
-            dots: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
+            dots: list[Primitive], own_lines: Mapping[int, tuple[int, ...]]) -> tuple[list[Primitive], list[Anchor]]:
     """Short arrows along the velocities of the joints; curved arrows of ω and ε on each turning link.
 
     The senses are read off the plans: a point's velocity is along its
@@ -431,7 +444,8 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
         for (symbol, colour, _, _), (centre, radius, start, sweep) in zip(turns, placed):
             items.extend(curved_arrow(centre, radius, start, sweep, Stroke(_TURN_STROKE_MM, colour), _TURN_HEAD_MM))
             tail = (centre[0] + radius * math.cos(start), centre[1] + radius * math.sin(start))
-            anchors.append(Anchor(tail, f"{symbol}{link}", lettering.NAME, start, colour))
+            anchors.append(Anchor(tail, f"{symbol}{link}", lettering.NAME, start, colour,
+                                  own_lines=own_lines.get(link, ())))
     return items, anchors
 
 
