@@ -400,7 +400,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     def others_shafts(index: int) -> np.ndarray:
         """Which of the shafts (``shafts_met``) a leader from the point of ``index`` reads as naming: all but the lines
         of its own link (``Anchor.own_lines``)."""
-        return ~np.isin(shafts_met, anchors[index].own_lines)
+        # A mask of the obstacles, not np.isin, which imports numpy.ma to ask whether they are masked.
+        own = np.zeros(len(fixed), dtype=bool)
+        own[np.asarray(anchors[index].own_lines, dtype=int)] = True
+        return ~own[shafts_met]
 
     def covered(table: np.ndarray, leaders_from: int, index: int) -> np.ndarray:
         """What the drawn shapes each shape of ``table`` (:func:`met`'s) meets weigh together: those before
