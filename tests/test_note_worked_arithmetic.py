@@ -61,14 +61,28 @@ def _force_section(note: str, locale: str) -> str:
     return note[start.end(): start.end() + end.start() if end else None]
 
 
+@pytest.fixture(scope="module")
+def starter_note(tmp_path_factory):
+    """note.md as ``graphplan run --only note`` writes it of a starter in a locale, run once for the module: the three
+    checks below read the same English notes of every starter."""
+    notes: dict[tuple[str, str], str] = {}
+
+    def note(starter: str, locale: str) -> str:
+        if (starter, locale) not in notes:
+            folder = tmp_path_factory.mktemp(f"{starter}-{locale}")
+            scene, out = folder / f"{starter}.toml", folder / "out"
+            assert main(["new", starter, "--out", str(scene)]) == 0
+            assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", locale]) == 0
+            notes[starter, locale] = (out / "note.md").read_text(encoding="utf-8")
+        return notes[starter, locale]
+
+    return note
+
+
 @pytest.mark.parametrize(("starter", "locale"), [*((starter, "en") for starter in STARTERS), ("shaper", "ru")])
-def test_the_force_analysis_s_printed_arithmetic_gives_its_printed_results(tmp_path, capsys, starter, locale):
-    scene, out = tmp_path / f"{starter}.toml", tmp_path / "out"
-    assert main(["new", starter, "--out", str(scene)]) == 0
-    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", locale]) == 0
-    capsys.readouterr()
+def test_the_force_analysis_s_printed_arithmetic_gives_its_printed_results(starter_note, starter, locale):
     mark = strings(locale)["decimal_mark"]
-    section = _force_section((out / "note.md").read_text(encoding="utf-8"), locale)
+    section = _force_section(starter_note(starter, locale), locale)
     formulas = worked_formulas(section, mark)
     # Every moment equation is among them: a pattern that found none would pass by checking nothing.
     assert len(formulas) >= section.count("ΣM") > 0, section
@@ -81,14 +95,10 @@ def test_the_force_analysis_s_printed_arithmetic_gives_its_printed_results(tmp_p
 
 
 @pytest.mark.parametrize("starter", STARTERS)
-def test_the_plans_worked_out_formulas_give_their_printed_results(tmp_path, capsys, starter):
+def test_the_plans_worked_out_formulas_give_their_printed_results(starter_note, starter):
     """The driving crank's VA = ω2·lOA, aAⁿ = ω2²·lOA, aA^τ = ε2·lOA and each Coriolis acceleration 2·ω·V, with their
     numbers put in (6.2832²·0.1 gave 3.9479 where 3.9478 was printed), worked out again from the printed numbers."""
-    scene, out = tmp_path / f"{starter}.toml", tmp_path / "out"
-    assert main(["new", starter, "--out", str(scene)]) == 0
-    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", "en"]) == 0
-    capsys.readouterr()
-    note = (out / "note.md").read_text(encoding="utf-8")
+    note = starter_note(starter, "en")
     symbolic = re.compile(r"(?:ω\d+²?·l\w+|ε\d+·l\w+|2·ω\d+·V\w+(?: \(ω\d+ = ω\d+\))?) = (?P<rest>[^ ]+ = −?[\d.]+)")
     # ω² as the product it stands for, which the pattern of products reads.
     formulas = [formula for match in symbolic.finditer(note)
@@ -100,16 +110,12 @@ def test_the_plans_worked_out_formulas_give_their_printed_results(tmp_path, caps
 
 
 @pytest.mark.parametrize(("starter", "locale"), [*((starter, "en") for starter in STARTERS), ("crank-rocker", "ru")])
-def test_a_reading_off_a_plan_gives_its_printed_result(tmp_path, capsys, starter, locale):
+def test_a_reading_off_a_plan_gives_its_printed_result(starter_note, starter, locale):
     """``VB = pb·μV = 61.27·0.0062832 = 0.38498`` gave 0.38497: the plan's length, printed as drawn to a hundredth of
     a millimetre, is printed as exactly as the construction's length must be for its product with the stated scale
     (and, for an ω or ε, its quotient by the link's length) to give the value the note and the tables print."""
-    scene, out = tmp_path / f"{starter}.toml", tmp_path / "out"
-    assert main(["new", starter, "--out", str(scene)]) == 0
-    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", locale]) == 0
-    capsys.readouterr()
     mark = strings(locale)["decimal_mark"]
-    note = (out / "note.md").read_text(encoding="utf-8")
+    note = starter_note(starter, locale)
     reading = re.compile(r"\w+·μ[Va](?:/l\w+)? = (?P<rest>[^ ]+ = −?[\d.,]+)")
     formulas = [formula for match in reading.finditer(note) for formula in worked_formulas(match["rest"], mark)]
     assert len(formulas) >= note.count("·μV = ") > 0, note[:3000]
