@@ -15,6 +15,11 @@ from sheet_texts import flat
 SVG = "{http://www.w3.org/2000/svg}"
 
 
+def layer(root: ET.Element, name: str) -> ET.Element:
+    """The group of an SVG's root with the id ``name`` (a drawing's layer: ``mechanism-senses``)."""
+    return next(group for group in root if group.get("id") == name)
+
+
 def whole_lines(pieces: Iterable[LineString]) -> list[LineString]:
     """``pieces`` (two-point segments) joined where they lie on one line, each line from its first end to its last."""
     whole: list[LineString] = []

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+FIXTURES_FOLDER = Path(__file__).resolve().parent.parent / "fixtures"
+
 
 @contextlib.contextmanager
 def notes_in_markdown_alone():
@@ -54,3 +56,15 @@ def plan_sheets_alone(scene: Path, folder: Path) -> list[Path]:
     assert plans, f"{scene.name}: the run wrote no plan"
     return plans
 
+
+
+def plan_sheets_of(name: str, folder: Path) -> list[Path]:
+    """:func:`plan_sheets_alone` of the fixture ``name`` (its file's stem, ``triad_class_iii``) or else of the starter
+    of that kind (``slotted-lever``), written in ``folder``."""
+    scene = FIXTURES_FOLDER / f"{name}.toml"
+    if not scene.exists():
+        from graphplan.starters import starter
+
+        scene = folder / f"{name}.toml"
+        scene.write_text(starter(name), encoding="utf-8")
+    return plan_sheets_alone(scene, folder / "out")

@@ -21,13 +21,9 @@ from pathlib import Path
 
 import pytest
 import shapely
-from drawn_lines import SVG, path_points, stroked_path
-from light_runs import plan_sheets_alone
-from test_turn_arrows_clear_of_the_frame import layer
+from drawn_lines import SVG, layer, path_points, stroked_path
+from light_runs import plan_sheets_of
 
-from graphplan.starters import starter
-
-ROOT = Path(__file__).resolve().parent.parent
 # The triads, whose crank lies under the coupler at position 8, and starters whose letters stood clear of the links.
 FIXTURES = ["triad_class_iii", "triad_with_slider"]
 STARTERS = ["triad", "crank-rocker", "slider-crank"]
@@ -80,13 +76,7 @@ def leaders_across_links(plan: Path) -> list[str]:
 
 @pytest.fixture(scope="module", params=FIXTURES + STARTERS)
 def written_plans(request, tmp_path_factory) -> list[Path]:
-    folder = tmp_path_factory.mktemp(request.param)
-    if request.param in STARTERS:
-        scene = folder / f"{request.param}.toml"
-        scene.write_text(starter(request.param), encoding="utf-8")
-    else:
-        scene = ROOT / "fixtures" / f"{request.param}.toml"
-    return plan_sheets_alone(scene, folder / "out")
+    return plan_sheets_of(request.param, tmp_path_factory.mktemp(request.param))
 
 
 def test_no_letter_on_a_mechanism_is_led_across_a_links_line(written_plans):

@@ -24,12 +24,9 @@ from pathlib import Path
 
 import pytest
 import shapely
-from light_runs import plan_sheets_alone
+from drawn_lines import SVG, layer
+from light_runs import plan_sheets_of
 
-from graphplan.starters import starter
-
-ROOT = Path(__file__).resolve().parent.parent
-SVG = "{http://www.w3.org/2000/svg}"
 # The SVG writes its numbers to 0.001 mm: two inks that only touch may read up to that much into each other.
 WRITTEN_PRECISION_MM = 0.002
 
@@ -57,10 +54,6 @@ def _ink(element: ET.Element) -> shapely.Geometry:
     if element.get("d").rstrip().upper().endswith("Z") and len(points) > 2:
         return shapely.Polygon(points).buffer(half)
     return shapely.LineString(points).buffer(half)
-
-
-def layer(root: ET.Element, name: str) -> ET.Element:
-    return next(group for group in root if group.get("id") == name)
 
 
 def turn_arrows(root: ET.Element) -> list[shapely.Geometry]:
@@ -124,13 +117,7 @@ def arrows_on_other_ink(plan: Path) -> list[str]:
 
 @pytest.fixture(scope="module", params=FIXTURES + STARTERS)
 def written_plans(request, tmp_path_factory) -> list[Path]:
-    folder = tmp_path_factory.mktemp(request.param)
-    if request.param in STARTERS:
-        scene = folder / f"{request.param}.toml"
-        scene.write_text(starter(request.param), encoding="utf-8")
-    else:
-        scene = ROOT / "fixtures" / f"{request.param}.toml"
-    return plan_sheets_alone(scene, folder / "out")
+    return plan_sheets_of(request.param, tmp_path_factory.mktemp(request.param))
 
 
 def test_no_curved_arrow_of_a_link_runs_over_the_frame_a_pin_or_a_block(written_plans):
