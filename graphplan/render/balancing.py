@@ -47,6 +47,7 @@ from .primitives import (
     Primitive,
     Stroke,
     Text,
+    arc_points,
     bounds_of,
     curved_arrow,
     dot_marker,
@@ -452,10 +453,7 @@ def _crossings(plane: CorrectionPlane, at: complex, radius: float, drawn: Sequen
     the tail the arc ran through a share passing near it."""
     if plane.angle_deg is None:
         return 0
-    sweep = math.radians(plane.angle_deg)
-    steps = max(8, int(sweep / math.radians(5)))
-    arc = LineString([_xy(at + radius * complex(math.cos(sweep * k / steps), math.sin(sweep * k / steps)))
-                      for k in range(steps + 1)])
+    arc = LineString(arc_points(_xy(at), radius, 0.0, math.radians(plane.angle_deg)))
     return sum(arc.intersects(line) for line in obstacles_of(drawn))
 
 

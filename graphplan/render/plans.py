@@ -66,6 +66,7 @@ from .primitives import (
     Primitive,
     Stroke,
     Text,
+    arc_points,
     bounds_of,
     curved_arrow,
     dot_marker,
@@ -538,9 +539,7 @@ def _short_link_turns(placed: list[_Turn], start: tuple[float, float], end: tupl
 
 def _arc_line(centre: tuple[float, float], start: float, sweep: float) -> LineString:
     """The arc of a curved arrow of radius :data:`TURN_RADIUS_MM`, head and all, as a line."""
-    steps = max(8, int(abs(sweep) / math.radians(5)))
-    return LineString([(centre[0] + TURN_RADIUS_MM * math.cos(start + sweep * k / steps),
-                        centre[1] + TURN_RADIUS_MM * math.sin(start + sweep * k / steps)) for k in range(steps + 1)])
+    return LineString(arc_points(centre, TURN_RADIUS_MM, start, sweep))
 
 
 # A plan.

@@ -151,9 +151,16 @@ def curved_arrow(centre: Point, radius: float, start: float, sweep: float, strok
     # its tip, and would lose its beginning.
     hidden = 2 * math.asin(min(1.0, 0.35 * head / radius))
     drawn = math.copysign(max(0.0, abs(sweep) - hidden), sweep)
-    steps = max(8, int(abs(drawn) / math.radians(5))) if drawn else 0
-    shaft = tuple(_on_circle(centre, radius, start + drawn * k / max(steps, 1)) for k in range(steps + 1))
+    shaft = arc_points(centre, radius, start, drawn) if drawn else (_on_circle(centre, radius, start),)
     return [Polyline(shaft, stroke), arrowhead(tip, direction, head, stroke.colour)]
+
+
+def arc_points(centre: Point, radius: float, start: float, sweep: float) -> tuple[Point, ...]:
+    """Points along the arc about ``centre`` from angle ``start`` through ``sweep`` (radians), its ends included, at
+    most 5° apart and at least eight steps: the shaft :func:`curved_arrow` draws, and the line the drawings weigh
+    such an arc by before they draw it."""
+    steps = max(8, int(abs(sweep) / math.radians(5)))
+    return tuple(_on_circle(centre, radius, start + sweep * k / steps) for k in range(steps + 1))
 
 
 def _on_circle(centre: Point, radius: float, angle: float) -> Point:
