@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import load_diagrams, settling
 from ..analysis import Analysis, PlanPosition
-from ..lever import Lever, LeverTerm
+from ..lever import BALANCING_FORCE, Lever, LeverTerm
 from ..locale import Count, load_symbol, load_symbols_in
 from ..mechanism import Mechanism
 from ..plans import Plan
@@ -689,7 +689,7 @@ def _worked_lever(note: Writer, plan: PlanPosition, lever: Lever, drawing: str, 
     moments, pole = reproducing(note, [abs(total), pa], [5, 5], written_force,
                                 _digits(written_force), lambda moments, pole: moments / pole)
     # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
-    lever_force = load_symbol("Fb", text)
+    lever_force = load_symbol(BALANCING_FORCE, text)
     equation = f"{lever_force} = |Σ(F·h)|/{segment} = {moments}/{pole} = {written_force} {text['newton']}"
     if driver.kind == "crank":
         length = f"l{driver.pivot}{driver.joint}"
