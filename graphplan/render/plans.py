@@ -272,7 +272,22 @@ def _caption_depth(lines: tuple[str, ...]) -> float:
 
 # The mechanism in the position.
 
+# The mechanism of a plan sheet, by what it is drawn from: a course sheet tries each plan sheet under a few captions
+# (its plans' scales named on it or not), which leave the mechanism as it was, and its curved arrows' search for room
+# took a tenth of the test suite drawing it again each time.  Kept with the velocity plan, as the plans are; the
+# mechanism, the motion and the acceleration plan are kept with it, so that their ids in the key name no others.
+_MECHANISMS: OwnedMemo[tuple[tuple[Mechanism, Motion, Plan], tuple[Layer, ...]]] = OwnedMemo()
+
+
 def _mechanism(sheet: PlanSheet) -> list[Layer]:
+    """The mechanism in the sheet's position, its senses and its letters, drawn once for what it is drawn from."""
+    drawn_from = (sheet.mechanism, sheet.motion, sheet.acceleration)
+    _, layers = _MECHANISMS.get(sheet.velocity, (*map(id, drawn_from), sheet.index, sheet.length_scale),
+                                lambda: (drawn_from, tuple(_drawn_mechanism(sheet))))
+    return list(layers)
+
+
+def _drawn_mechanism(sheet: PlanSheet) -> list[Layer]:
     mechanism, motion, index = sheet.mechanism, sheet.motion, sheet.index
     mm_per_m = 1.0 / sheet.length_scale
 
