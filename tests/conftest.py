@@ -1,5 +1,6 @@
 """Session set-up shared by every test module."""
 import compileall
+import gc
 from pathlib import Path
 
 import pytest
@@ -13,6 +14,13 @@ def pytest_configure(config):
     # bytecode it did not write, so compiling once here, before the workers start, spares every child that work.
     if not hasattr(config, "workerinput"):
         compileall.compile_dir(PACKAGE, quiet=2)
+    # A worker keeps what its tests made in the package's memos (analyses, drawings, placements) and hypothesis's
+    # and pytest's own records: the collector's full passes at the default thresholds walked all of it some thousand
+    # times, a tenth of the drawing tests' time, to free next to nothing. The thresholds a command runs under
+    # (cli._few_full_collections) serve a worker too; a test that counts what is freed collects for itself.
+    from graphplan import cli
+
+    gc.set_threshold(cli.YOUNG_COLLECTION_AT, cli.MIDDLE_COLLECTION_EVERY, cli.FULL_COLLECTION_EVERY)
 
 
 @pytest.fixture(scope="module")
