@@ -546,6 +546,12 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
     return dynamics if dynamics is not None else MachineDynamics(analysis if analysis is not None else scene)
 
 
+def tells_diagrams(scene: Scene, analysis: Analysis | None, pieces: Iterable[str] = ()) -> bool:
+    """Whether the note tells the kinematic diagrams, their method and scales: where the run draws them (``pieces``)
+    or a run of the scene would, as it tells the plans whatever it is asked with (``--only note``)."""
+    return analysis is not None and "diagrams" in (*pieces, *chosen(scene, analysis))
+
+
 def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
            dynamics: MachineDynamics | None = None, pictures: tuple[str, ...] = (),
            lever_scales: Mapping[str, float] | None = None,
@@ -569,7 +575,7 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         from .report.note import note_html, note_markdown
 
         files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales, shown_in_parts,
-                                         sheet_levers)
+                                         sheet_levers, tells_diagrams(scene, analysis, pieces))
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
         files["note.tex"] = latex_document(files["note.md"], scene.title, locale, verbatim)
     if analysis is None:
@@ -916,4 +922,4 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
 
 
 __all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "balancing_document", "check_formats", "chosen",
-           "document", "drawings", "files", "missing", "vibration_document", "vibration_figures"]
+           "document", "drawings", "files", "missing", "tells_diagrams", "vibration_document", "vibration_figures"]

@@ -14,6 +14,7 @@ from xml.etree import ElementTree
 import pytest
 from sheet_texts import flat
 
+import graphplan
 from graphplan.cli import main
 from graphplan.locale import strings
 
@@ -63,3 +64,40 @@ def test_the_note_gives_the_diagrams_method_and_the_scales_they_are_drawn_at(tmp
     assert epsilon_scale == pytest.approx(omega_scale / (time * second_pole), rel=2e-3)
     # And how far the chord method comes from the analytic curves, for the velocity and the acceleration.
     assert len(re.findall(r"\d %|% ", section)) >= 2
+
+
+
+def _section(note: str, words) -> str:
+    start = note.index(words["note_kd_method"])
+    return note[start:note.index("\n#", start)]
+
+
+@pytest.mark.parametrize("locale", ["en", "zh"])
+def test_a_note_asked_for_alone_still_tells_the_diagrams(tmp_path, locale):
+    """`--only note` wrote the kinematics of every plan and left out the diagrams' section, method and scales, which
+    needed diagrams.svg beside it; the note alone now tells them as the note with the drawing does, only without
+    the figure.  The Chinese note parts the formulas with its own semicolon, as its other sections do."""
+    alone, drawn = tmp_path / "alone", tmp_path / "drawn"
+    assert main(["run", str(RATCHET), "--out", str(alone), "--only", "note", "--locale", locale]) == 0
+    assert main(["run", str(RATCHET), "--out", str(drawn), "--only", "note,diagrams", "--locale", locale]) == 0
+    words = strings(locale)
+    note_alone, note_drawn = ((folder / "note.md").read_text(encoding="utf-8") for folder in (alone, drawn))
+    assert "](diagrams.svg)" not in note_alone
+    told_alone = _section(note_alone, words)
+    assert re.search(r"μω = μψ/\(μt·H₁\) = " + NUMBER, told_alone)
+    # The same method, scales and differences, to the digit; the drawn note adds only its figure after them.
+    assert _section(note_drawn, words).startswith(told_alone.rstrip())
+    working = graphplan.load(RATCHET).positions.working
+    assert f"3.3{'.' if locale == 'en' else ''} {words['kd_title'].format(link=working.link, point='').strip()}" \
+        in note_alone
+    assert (";" in told_alone) == (locale == "en")
+
+
+def test_a_note_of_a_scene_that_leaves_the_diagrams_out_does_not_tell_them(tmp_path):
+    text = RATCHET.read_text(encoding="utf-8") + '\n[output]\ninclude = ["velocity", "acceleration", "note"]\n'
+    scene = tmp_path / "without_diagrams.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "note", "--locale", "en"]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert strings("en")["note_kd_method"] not in note
+    assert "## 3." in note  # the kinematics are still there, without the diagrams

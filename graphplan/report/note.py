@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import kinematic_diagrams
 from ..analysis import SCENE_WIDE_WARNINGS, Analysis, PlanPosition, VelocityPosition
 from ..check import Reading, epsilon_of_another, quantity_symbol
 from ..errors import SceneError
@@ -81,7 +82,8 @@ _ROMAN = {1: "I", 2: "II", 3: "III"}
 def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None,
                   figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None,
                   shown_in_parts: Mapping[str, Sequence[str]] | None = None,
-                  sheet_levers: Mapping[str, tuple[int, float]] | None = None) -> str:
+                  sheet_levers: Mapping[str, tuple[int, float]] | None = None,
+                  tells_diagrams: bool | None = None) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.machine_dynamics.MachineDynamics`) adds the section on the
@@ -93,9 +95,15 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     lever is drawn at there where a small sheet draws it at its own (``forces_5.svg``: 0.01); ``shown_in_parts`` the
     headings of the diagrams a part of a figure holds (``dynamics-2.svg``), which its caption names; ``sheet_levers``
     the course sheet that draws each force sheet's lever and the μV there (``forces_5.svg``: sheet 12, 0.02), told
-    after the lever's table where it is not the μV the note works it at.
+    after the lever's table where it is not the μV the note works it at.  ``tells_diagrams`` whether it has the
+    kinematic diagrams' section (their method and scales, and the figure where ``figures`` has diagrams.svg); by
+    default where a run of the scene draws them, so that the note is the one ``--only note`` writes.
     """
-    note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures),
+    if tells_diagrams is None:
+        from ..deliverables import tells_diagrams as told_by_run
+
+        tells_diagrams = told_by_run(scene if analysis is None else analysis.scene, analysis)
+    note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures), tells_diagrams=tells_diagrams,
                  lever_scales=dict(lever_scales or {}), sheet_levers=dict(sheet_levers or {}),
                  shown_in_parts={name: tuple(shown) for name, shown in (shown_in_parts or {}).items()})
     note.write()
@@ -169,6 +177,7 @@ class _Note:
     scene: Scene | None = None
     figures: frozenset[str] = frozenset()
     figures_shown: int = 0
+    tells_diagrams: bool = False
     # μV of each force sheet's lever where the figure beside the note draws it at its own (``forces_5.svg``).
     lever_scales: Mapping[str, float] = field(default_factory=dict)
     # The course sheet that draws each force sheet's lever, and its μV there (``forces_5.svg``: sheet 12, 0.02).
@@ -520,7 +529,7 @@ class _Note:
                                    error_table_lines(self.analysis, position, self.mark))
                     self.slips(position)
                 self.figure("velocity_plans.svg", self.text["velocity_plans_heading"])
-            if diagrams is not None and "diagrams.svg" in self.figures:
+            if diagrams is not None and self.tells_diagrams:
                 subsection += 1
                 self.heading(3, diagrams, f"{section}.{subsection}")
                 self.diagrams_method()
@@ -539,15 +548,15 @@ class _Note:
         """How the kinematic diagrams are built (the chord method), the scales diagrams.svg draws them at and how
         far its derivatives come from the analytic ones, each line as the drawing writes it: the figure stood alone,
         with no word on the method, its μ or its pole distances."""
-        from ..kinematic_diagrams import of_analysis
         from ..render.diagrams import scales_and_differences
         from ..render.primitives import decimal_marked
 
-        scales, differences = scales_and_differences(of_analysis(self.analysis), self.text)
+        scales, differences = scales_and_differences(kinematic_diagrams.of_analysis(self.analysis), self.text)
         self.para(self.t("note_kd_method"))
-        # A paragraph each: a line broken by hand reads run together in the LaTeX note.
+        # A paragraph each: a line broken by hand reads run together in the LaTeX note.  The drawing parts two
+        # formulas with a Latin semicolon in every language; the note with its language's (the Chinese "；").
         for line in (*scales, *differences):
-            self.para(decimal_marked(line, self.mark))
+            self.para(decimal_marked(line, self.mark).replace(";  ", self.text["semicolon"]))
 
     def structure(self, section: int) -> None:
         mechanism = self.mechanism
