@@ -254,19 +254,38 @@ class Page:
         # A part too big to stand under its heading says whose it is only by its sheet's title block: beside
         # another drawing it read as that one's (position 2's lever under "position 7"), so the two never share.
         others = [drawing for drawing in self.drawings if _whole_of(drawing) != _whole_of(panel)]
-        names = {placed.name for placed, _, _ in self.placed}
+        spots_of = {placed.name: rect for placed, rect, _ in self.placed}
 
         def unowned(drawing: Panel) -> bool:
             # A part headless only because it stands under the part it goes on from (a run of a grid, a force sheet's
             # rows) reads as that one's: no ambiguity.  Kept apart, the offset slider-crank's load diagrams found no
             # room on the sheet of a force sheet's rows, though the room was there.
-            return _headless(drawing) and drawing.continues not in names
+            return _headless(drawing) and drawing.continues not in spots_of
+
+        def stray(drawing: Panel) -> bool:
+            # Headless away from the part it goes on from, it reads as the drawing's it stands by: position 11's
+            # driving link stood under position 4's, the slotted lever's English A1.  Only a drawing of the same kind
+            # is mistaken for its whole (a lever by load diagrams under their own heading is no load diagram).
+            return _headless(drawing) and drawing.continues in spots_of and \
+                not _goes_on_from(spots_of[drawing.name], spots_of[drawing.continues])
 
         if others and (unowned(panel) or any(map(unowned, others))):
             return []
-        if panel.continues and panel.continues in names:
-            # Under the heading of the part it goes on from, which it would only repeat as "continued".
-            panel = panel.without_heading()
+        rivals = [drawing for drawing in others if _kind(drawing) == _kind(panel)]
+        if any(map(stray, rivals)):
+            return []
+        if panel.continues and panel.continues in spots_of:
+            # Under the heading of the part it goes on from, which it would only repeat as "continued": by another
+            # whole of its kind only next to that part, else with its heading.
+            bare = panel.without_heading()
+            earlier = spots_of[panel.continues]
+            allowed = (lambda rect: _goes_on_from(rect, earlier)) if rivals else None
+            for way in bare.ways:
+                spots = self._spots(way, most, allowed)
+                if spots:
+                    return [(bare, way, rect) for rect in spots]
+            if not rivals:
+                return []
         for way in panel.ways:
             spots = self._spots(way, most)
             if spots:
@@ -303,9 +322,9 @@ class Page:
         self.placed.pop()
         self.drawings.pop()
 
-    def _spots(self, panel: Panel, most: int) -> list[Rect]:
-        """The ``most`` spots where ``panel`` as arranged keeps the drawings most compact, the best first; none
-        where it fits nowhere."""
+    def _spots(self, panel: Panel, most: int, allowed: Callable[[Rect], bool] | None = None) -> list[Rect]:
+        """The ``most`` spots where ``panel`` as arranged keeps the drawings most compact, the best first, of those
+        ``allowed`` where given; none where it fits nowhere."""
         x0, y0, x1, y1 = panel.extent
         width, height = x1 - x0, y1 - y0
         rects = [rect for _, rect, _ in self.placed]
@@ -348,6 +367,8 @@ class Page:
                     continue
                 if panel.in_rows and not all(rect[3] <= earlier[1] + 1e-6 for earlier in same_kind):
                     continue
+                if allowed is not None and not allowed(rect):
+                    continue
                 union = rect if common is None else (min(common[0], rect[0]), min(common[1], rect[1]),
                                                      max(common[2], rect[2]), max(common[3], rect[3]))
                 key = self._compactness((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
@@ -387,6 +408,16 @@ def _reads_after(rect: Rect, earlier: Rect) -> bool:
     too, as the sheets keep them in order.
     """
     return rect[0] >= earlier[2] - 1e-6 or rect[3] < earlier[3] - 1e-6
+
+
+def _goes_on_from(rect: Rect, earlier: Rect) -> bool:
+    """Whether a part at ``rect`` stands next to the part at ``earlier`` it goes on from, so that it reads as going
+    on under that one's heading: under it, across some of its width, with no room for another drawing between; or
+    beside it, level with its top, as the next in its row."""
+    near = 2.0 * GAP_MM
+    under = rect[0] < earlier[2] and earlier[0] < rect[2] and earlier[1] - near <= rect[3] <= earlier[1] + _EDGE
+    beside = earlier[2] - _EDGE <= rect[0] <= earlier[2] + near and abs(rect[3] - earlier[3]) <= _EDGE
+    return under or beside
 
 
 def overlap(a: Rect, b: Rect) -> bool:
