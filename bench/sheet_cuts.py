@@ -4,18 +4,22 @@ every combination of cuts.
     python bench/sheet_cuts.py [--sheet SHEET ...] [--budget SECONDS]
 
 A force sheet that no sheet holds whole stands in parts; `force_rows.Rows.cuts` offers the first
-`force_rows.MOST_CUTS` cuts into as many parts (least paper first), and `render/sheet.py`
-`fewest_sheets_cuts` chooses among them greedily, a force sheet after another, each taking the first cut that
-saves a sheet.  For every fixture and every starter that has force sheets, in en, ru and zh, on the scene's own
-sheet (and each `--sheet` given), a fresh interpreter runs `graphplan run` (`run.run`) three times: as it is,
-with `MOST_CUTS = 8` and with every cut (`MOST_CUTS` patched), after an untimed run that loads the modules.  The
-last run's call of `fewest_sheets_cuts` (its cuts, the load diagrams packed after them) is then answered again by
-the package's own functions: greedy over the first 4, the first 8 and all the cuts (the same function, each
-sheet's cuts cut short), and every combination of each sheet's ways, its cuts and its rows apart, packed in turn
-(`force_sheet_choice.CutChoice.pages`), stopped after `--budget` processor seconds (the search then says how far it
-came): the fewest sheets of all, and the fewest of those that keep the load diagrams after every force sheet
-(`packing.reads_in_order`).  Every figure counts the sheets that `pack` lays the chosen parts on, as the run's
-sheet_N.svg of forces are packed, before any force sheet is drawn larger.
+`force_rows.MOST_CUTS` cuts into as many parts (least paper first), and the run (`render/sheet.py` `course_panels`)
+chooses among them and each sheet's rows apart with `force_sheet_choice.CutChoice.fewest(combined=True)`: greedily,
+a force sheet after another, each taking the first way that saves a sheet, then, where the sheets' ways make no more
+than `MOST_COMBINATIONS` combinations, every combination packed for one that saves a sheet more.  For every fixture
+and every starter that has force sheets, in en, ru and zh, on the scene's own sheet (and each `--sheet` given), a
+fresh interpreter runs `graphplan run` (`run.run`) three times: as it is, with `MOST_CUTS = 8` and with every cut
+(`MOST_CUTS` patched), after an untimed run that loads the modules.  The last run's choice (its cuts, the load
+diagrams packed after them) is then made again by the package's own functions: as the run makes it (for its
+time: its sheets are those the run laid out), greedy alone
+(`fewest_sheets_cuts`) over the first 4, the first 8 and all the cuts (each sheet's cuts cut short), and every
+combination of each sheet's ways, its cuts and its rows apart, packed in turn (`CutChoice.pages`), stopped after
+`--budget` processor seconds (the search then says how far it came): the fewest sheets of all, and the fewest of
+those that keep the load diagrams after every force sheet (`packing.reads_in_order`).  Every figure counts the
+sheets that `pack` lays the parts on, as the run's sheet_N.svg of forces are packed: the run's own as it draws them
+(each drawn larger where the sheets have room, the load diagrams then put after the force sheets where that costs no
+sheet, `force_sheet_choice.read_after_forces`), the others' before any force sheet is drawn larger.
 
 Times are processor times (the machine is shared): each run's own, and each choice's as a fraction of the run
 as it is.  Results go to bench/results/sheet_cuts.json and sheet_cuts.md.
@@ -45,6 +49,8 @@ LOCALES = ("en", "ru", "zh")
 STARTERS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad", "flywheel", "rotor")
 MORE_CUTS = 8
 ALL_CUTS = 10**9
+# The choices measured against every combination: the run's own, and the greedy choice alone over 4, 8 and all cuts.
+CHOICES = ("run", "greedy/4", f"greedy/{MORE_CUTS}", "greedy/all")
 BUDGET_S = 60.0
 
 
@@ -72,15 +78,25 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     own_choice = sheet_module.CutChoice
     calls: list[tuple] = []
 
-    # The run chooses its cuts through the choice (`force_sheet_choice.CutChoice`) that `fewest_sheets_cuts` makes (`course_panels` makes it itself, to
-    # choose again for the order of the load diagrams): each one made is a call's arguments.
+    # The run chooses its cuts through a `force_sheet_choice.CutChoice` that `course_panels` makes: each one made
+    # there is a call's arguments, the run's own choice the last.
     class Recorded(own_choice):
         def __init__(self, cuts, after, chosen, form, rows_apart=()):
             super().__init__(cuts, after, chosen, form, rows_apart)
             calls.append((cuts, after, chosen, form, (rows_apart,) if rows_apart else ()))
 
+    # And the force sheets as the run lays them out in the end (`CoursePanels.forces`: its parts, drawn larger where
+    # the sheets have room, then the load diagrams), the run's own the last.
+    own_panels = sheet_module.course_panels
+    laid: list = []
+
+    def recorded_panels(*arguments, **options):
+        laid.append(own_panels(*arguments, **options))
+        return laid[-1]
+
     def timed_run(most: int, scratch: Path) -> float:
         calls.clear()
+        laid.clear()
         force_rows.MOST_CUTS = most
         scratch.mkdir(parents=True)
         scene = scene_of(name, scratch)
@@ -90,6 +106,7 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
 
     usual = force_rows.MOST_CUTS
     sheet_module.CutChoice = Recorded
+    sheet_module.course_panels = recorded_panels
     with tempfile.TemporaryDirectory() as scratch_name:
         scratch = Path(scratch_name)
         timed_run(usual, scratch / "warm")  # the modules loaded, as every later run finds them
@@ -97,6 +114,7 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
                 "all": timed_run(ALL_CUTS, scratch / "c")}
     force_rows.MOST_CUTS = usual
     sheet_module.CutChoice = own_choice
+    sheet_module.course_panels = own_panels
     result: dict = {"scene": name, "locale": locale, "sheet": sheet or "scene's", "run_cpu_s": runs}
     if not calls:
         result["force_sheets"] = 0
@@ -119,7 +137,16 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
         return len(pages), not read_after or reads_in_order(pages)
 
     base = runs["4"]
-    choices = {}
+    # The run's own: its sheets and order as it lays the force sheets out, and the time of its choice made again as
+    # `course_panels` makes it (the greedy choice, then every combination of the ways where they are few,
+    # `force_sheet_choice.MOST_COMBINATIONS`).
+    final = laid[-1].forces
+    assert final[len(final) - len(after):] == tuple(after), "the run's last layout is not its last choice's"
+    start = time.process_time()
+    own_choice(cuts, after, chosen, form, *rows_apart).fewest(combined=True)
+    used = time.process_time() - start
+    sheets, in_order = taken(final[:len(final) - len(after)])
+    choices = {"run": {"sheets": sheets, "in_order": in_order, "cpu_s": used, "of_run": used / base}}
     for label, most in (("greedy/4", usual), (f"greedy/{MORE_CUTS}", MORE_CUTS), ("greedy/all", ALL_CUTS)):
         start = time.process_time()
         parts = own([ways[:most] for ways in cuts], after, chosen, form, *rows_apart)
@@ -146,7 +173,7 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     choices["exhaustive"] = {"sheets": best, "in_order_sheets": best_in_order, "cpu_s": used, "of_run": used / base,
                              "combinations": total, "tried": tried, "complete": tried == total}
     result["choices"] = choices
-    result["run_sheets"] = choices["greedy/4"]["sheets"]
+    result["run_sheets"] = choices["run"]["sheets"]
     return result
 
 
@@ -174,29 +201,28 @@ def refused(row: dict, columns: int) -> str:
 
 
 def _sheets_cell(choice: dict) -> str:
-    """A greedy choice's sheets, marked † where the load diagrams stand before a force sheet."""
+    """A choice's sheets, marked † where the load diagrams stand before a force sheet."""
     return f"{choice['sheets']}{'' if choice['in_order'] else '†'}"
 
 
 def table(rows: list[dict]) -> str:
-    lines = [("| scene | locale | sheet | force sheets (ways each: cuts and rows apart) | greedy/4 | greedy/8 | greedy/all | exhaustive, "
-              "in order (tried of all) | run s (4 / 8 / all cuts) | choice's time of the run: greedy/4, /8, /all, "
-              "exhaustive |"),
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    lines = [("| scene | locale | sheet | force sheets (ways each: cuts and rows apart) | run's choice | greedy/4 | "
+              "greedy/8 | greedy/all | exhaustive, in order (tried of all) | run s (4 / 8 / all cuts) | choice's time "
+              "of the run: run's, greedy/4, /8, /all, exhaustive |"),
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
         if "error" in row:
-            lines.append(refused(row, 6))
+            lines.append(refused(row, 7))
             continue
         runs = row["run_cpu_s"]
         timing = " / ".join(f"{runs[key]:.2f}" for key in ("4", str(MORE_CUTS), "all"))
         if "choices" not in row:
-            lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | none | | | | | {timing} | |")
+            lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | none | | | | | | {timing} | |")
             continue
         c = row["choices"]
         ex = c["exhaustive"]
-        shares = ", ".join(f"{100 * c[key]['of_run']:.2g} %" for key in ("greedy/4", f"greedy/{MORE_CUTS}",
-                                                                           "greedy/all", "exhaustive"))
-        greedy = " | ".join(_sheets_cell(c[key]) for key in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all"))
+        shares = ", ".join(f"{100 * c[key]['of_run']:.2g} %" for key in (*CHOICES, "exhaustive"))
+        greedy = " | ".join(_sheets_cell(c[key]) for key in CHOICES)
         lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | {row['force_sheets']} "
                      f"({' '.join(map(str, row['ways']))}) | {greedy} | {ex['sheets']}, {ex['in_order_sheets']} "
                      f"({ex['tried']} of {ex['combinations']}) | {timing} | {shares} |")
@@ -231,17 +257,17 @@ def summarised(rows: list[dict], budget: float) -> None:
     chosen = [row for row in drawn if any(ways > 1 for ways in row["ways"])]
     refused = [row for row in rows if "error" in row]
     worse = {label: sum(row["choices"][label]["sheets"] > row["choices"]["exhaustive"]["sheets"] for row in drawn)
-             for label in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all")}
+             for label in CHOICES}
     incomplete = [row for row in drawn if not row["choices"]["exhaustive"]["complete"]]
     # Runs whose choice leaves the load diagrams before a force sheet: of them, those where some combination keeps
     # them after all on as few sheets.
-    out_of_order = [row for row in drawn if not row["choices"]["greedy/4"]["in_order"]]
+    out_of_order = [row for row in drawn if not row["choices"]["run"]["in_order"]]
     order_left = [row for row in out_of_order
-                  if row["choices"]["exhaustive"]["in_order_sheets"] <= row["choices"]["greedy/4"]["sheets"]]
+                  if row["choices"]["exhaustive"]["in_order_sheets"] <= row["choices"]["run"]["sheets"]]
     most_ways = max((ways for row in drawn for ways in row["cuts"]), default=0)
     past = {most: sum(ways > most for row in drawn for ways in row["cuts"]) for most in (4, MORE_CUTS)}
     shares = {label: max((row["choices"][label]["of_run"] for row in drawn), default=0.0)
-              for label in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all", "exhaustive")}
+              for label in (*CHOICES, "exhaustive")}
     run_ratios = {key: statistics.median(row["run_cpu_s"][key] / row["run_cpu_s"]["4"] for row in drawn)
                   for key in (str(MORE_CUTS), "all")} if drawn else {}
     result = {"budget_s": budget, "rows": rows, "with_force_sheets": len(drawn), "with_a_choice": len(chosen),
@@ -250,10 +276,11 @@ def summarised(rows: list[dict], budget: float) -> None:
               "median_run_ratio_to_4": run_ratios, "out_of_order": len(out_of_order),
               "in_order_at_the_same_count": len(order_left)}
     markdown = (
-        "# The cuts of force sheets: greedy over 4 cuts against more cuts and every combination\n\n"
+        "# The cuts of force sheets: the run's choice and the greedy one over 4 cuts against more cuts and every "
+        "combination\n\n"
         f"{len(rows)} runs (every fixture and starter in en, ru, zh, on each sheet measured), {len(drawn)} with "
-        f"force sheets, {len(chosen)} of them with a force sheet that may stand more than one way, {len(refused)} refused (the "
-        f"scene's μl or a drawing no such sheet holds). A force sheet had at most **{most_ways}** cuts; "
+        f"force sheets, {len(chosen)} of them with a force sheet that may stand more than one way, {len(refused)} "
+        f"refused (the scene's μl or a drawing no such sheet holds). A force sheet had at most **{most_ways}** cuts; "
         f"{past[4]} force sheets had more than 4, {past[MORE_CUTS]} more than {MORE_CUTS}. Sheets taken beyond "
         "the best that every combination of the cuts gives: "
         + ", ".join(f"{label} in **{count}** runs" for label, count in worse.items())
@@ -268,7 +295,8 @@ def summarised(rows: list[dict], budget: float) -> None:
         + "; the whole run with 8 and with every cut, median of its ratio to the run with 4: "
         + ", ".join(f"{key} {ratio:.3f}" for key, ratio in run_ratios.items()) + ".\n\n"
         + table(rows) + "\n\n"
-        "Sheets: the force sheets' (with the load diagrams) as `render/packing.pack` lays them; the exhaustive search's "
+        "Sheets: the force sheets' (with the load diagrams) as `render/packing.pack` lays them, the run's as it draws "
+        "them (larger where the sheets have room); the exhaustive search's "
         "fewest, then its fewest with the load diagrams after every force sheet. Run s: the processor "
         "seconds of `run.run` with `force_rows.MOST_CUTS` 4, 8 and every cut; a choice's time: the processor time "
         "of choosing (and packing) alone, as a share of the run with 4.\n"

@@ -41,8 +41,8 @@ MOST_ROWS_TRIED_STACKED = 6
 CAPTION_BESIDE_WIDTHS_MM = (70.0, 85.0, 100.0, 120.0, 140.0, CAPTION_WIDTH_MM)
 # The cuts of a force sheet into as many parts that the sheets try packing (:meth:`Rows.cuts`), least paper first.
 # Measured, bench/results/sheet_cuts.md: over every fixture and starter in en, ru and zh, on its own sheet, A3 and
-# A4, no force sheet had more than 3 such cuts, and the greedy choice among them (`sheet.fewest_sheets_cuts`) took
-# as few sheets as the best of every combination of them; the bound only keeps a sheet of many rows from trying all.
+# A4, no force sheet had more than 4 such cuts however many were offered, so the bound only keeps a sheet of many
+# rows from trying all.
 MOST_CUTS = 4
 
 

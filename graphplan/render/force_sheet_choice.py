@@ -29,8 +29,9 @@ LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1
 # all nine, largest first, made a run's sheets a third slower.
 PROBE_STEPS = (1, 1)
 # The most combinations of the force sheets' ways packed each in turn where the greedy choice may have missed a
-# saving (:meth:`CutChoice._combined`), each a packing of some 30 ms: the engine's 16 on its A2 save a sheet; the
-# Stephenson six-bar's 25 on its A1 took its run 40 % longer and save one only in Russian (bench/sheet_cuts.py).
+# saving (:meth:`CutChoice._combined`), each a packing of some 30 to 110 ms: the engine's 16 on its A2 save a sheet;
+# the Stephenson six-bar's 25 on its A1 save one only in Russian, where packing them all takes 1.2 times the run's
+# own processor time (bench/results/sheet_cuts.md: the one run of 171 whose sheets every combination packs fewer).
 MOST_COMBINATIONS = 16
 
 
@@ -161,8 +162,9 @@ class CutChoice:
         A way changed one sheet at a time saves nothing where only two
         changed together do: the engine's force sheets on its own A2 stood
         on three sheets where a cut of each together puts them on two, the
-        triad with a slider's likewise on A3 (bench/sheet_cuts.py: six runs
-        of 171 took a sheet more than every combination of their ways).
+        triad with a slider's and the double rocker's likewise on A3
+        (bench/results/sheet_cuts.md: the greedy choice alone takes a sheet
+        more than every combination of the ways in nine runs of 171).
         """
         varied = [k for k, ways in enumerate(self.ways_of) if len(ways) > 1]
         if math.prod(len(self.ways_of[k]) for k in varied) > MOST_COMBINATIONS:
