@@ -12,14 +12,14 @@ and every starter that has force sheets, in en, ru and zh, on the scene's own sh
 fresh interpreter runs `graphplan run` (`run.run`) three times: as it is, with `MOST_CUTS = 8` and with every cut
 (`MOST_CUTS` patched), after an untimed run that loads the modules.  The last run's choice (its cuts, the load
 diagrams packed after them) is then made again by the package's own functions: as the run makes it (for its
-time: its sheets are those the run laid out), greedy alone
-(`fewest_sheets_cuts`) over the first 4, the first 8 and all the cuts (each sheet's cuts cut short), and every
-combination of each sheet's ways, its cuts and its rows apart, packed in turn (`CutChoice.pages`), stopped after
-`--budget` processor seconds (the search then says how far it came): the fewest sheets of all, and the fewest of
-those that keep the load diagrams after every force sheet (`packing.reads_in_order`).  Every figure counts the
-sheets that `pack` lays the parts on, as the run's sheet_N.svg of forces are packed: the run's own as it draws them
-(each drawn larger where the sheets have room, the load diagrams then put after the force sheets where that costs no
-sheet, `force_sheet_choice.read_after_forces`), the others' before any force sheet is drawn larger.
+time: its sheets are those the run laid out), greedy alone (`fewest_sheets_cuts`) over the first 4, the first 8 and
+all the cuts (each sheet's cuts cut short), and every combination of each sheet's ways, its cuts and its rows apart,
+packed in turn (`CutChoice.pages`), stopped after `--budget` processor seconds (the search then says how far it
+came): the fewest sheets of all, and the fewest of those that keep the load diagrams after every force sheet
+(`packing.reads_in_order`).  Every figure counts the sheets that `pack` lays the parts on, as the run's sheet_N.svg
+of forces are packed: the run's own as it draws them (each drawn larger where the sheets have room, the load
+diagrams then put after the force sheets where that costs no sheet, `force_sheet_choice.read_after_forces`), the
+others' before any force sheet is drawn larger.
 
 Times are processor times (the machine is shared): each run's own, and each choice's as a fraction of the run
 as it is.  Results go to bench/results/sheet_cuts.json and sheet_cuts.md.
@@ -51,6 +51,7 @@ MORE_CUTS = 8
 ALL_CUTS = 10**9
 # The choices measured against every combination: the run's own, and the greedy choice alone over 4, 8 and all cuts.
 CHOICES = ("run", "greedy/4", f"greedy/{MORE_CUTS}", "greedy/all")
+NAMES = {"run": "the run's choice"}
 BUDGET_S = 60.0
 
 
@@ -283,7 +284,7 @@ def summarised(rows: list[dict], budget: float) -> None:
         f"refused (the scene's μl or a drawing no such sheet holds). A force sheet had at most **{most_ways}** cuts; "
         f"{past[4]} force sheets had more than 4, {past[MORE_CUTS]} more than {MORE_CUTS}. Sheets taken beyond "
         "the best that every combination of the cuts gives: "
-        + ", ".join(f"{label} in **{count}** runs" for label, count in worse.items())
+        + ", ".join(f"{NAMES.get(label, label)} in **{count}** runs" for label, count in worse.items())
         + f"; the exhaustive search stopped at its budget ({budget:g} processor s) in {len(incomplete)} runs "
         "(its row says how many combinations it tried of how many). "
         f"The run's choice leaves the load diagrams before a force sheet (†) in {len(out_of_order)} runs; in "
@@ -291,7 +292,7 @@ def summarised(rows: list[dict], budget: float) -> None:
         "choice refuses those that stand more force sheets with every drawing apart, a group away from its "
         "polygon, than the count needs).\n\n"
         "Processor time, the most any run's choice took as a share of the run with 4 cuts: "
-        + ", ".join(f"{label} {100 * share:.2g} %" for label, share in shares.items())
+        + ", ".join(f"{NAMES.get(label, label)} {100 * share:.2g} %" for label, share in shares.items())
         + "; the whole run with 8 and with every cut, median of its ratio to the run with 4: "
         + ", ".join(f"{key} {ratio:.3f}" for key, ratio in run_ratios.items()) + ".\n\n"
         + table(rows) + "\n\n"

@@ -29,10 +29,11 @@ LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1
 # all nine, largest first, made a run's sheets a third slower.
 PROBE_STEPS = (1, 1)
 # The most combinations of the force sheets' ways packed each in turn where the greedy choice may have missed a
-# saving (:meth:`CutChoice._combined`), each a packing of some 30 to 110 ms: the engine's 16 on its A2 save a sheet;
-# the Stephenson six-bar's 25 on its A1 save one only in Russian, where packing them all takes 1.2 times the run's
-# own processor time (bench/results/sheet_cuts.md: the one run of 171 whose sheets every combination packs fewer).
-MOST_COMBINATIONS = 16
+# saving (:meth:`CutChoice._combined`), each a packing of some 30 to 110 ms: the engine's 16 on its A2 save a sheet,
+# the Stephenson six-bar's 25 an A1 sheet in Russian (3 → 2), for 2.5 s of processor time more (2.3 s → 4.8 s): a
+# course project's sheet is worth the seconds.  At 16, that was the one run of 171 whose force sheets some
+# combination packed on fewer sheets than the run (bench/results/sheet_cuts.md).
+MOST_COMBINATIONS = 25
 
 
 def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequence[Panel], sheet: str,
