@@ -277,17 +277,19 @@ class Page:
         if panel.continues and panel.continues in spots_of:
             # Under the heading of the part it goes on from, which it would only repeat as "continued": by another
             # whole of its kind only next to that part, else with its heading.
-            bare = panel.without_heading()
             earlier = spots_of[panel.continues]
-            allowed = (lambda rect: _goes_on_from(rect, earlier)) if rivals else None
-            for way in bare.ways:
-                spots = self._spots(way, most, allowed)
-                if spots:
-                    return [(bare, way, rect) for rect in spots]
-            if not rivals:
-                return []
+            found = self._spots_in_first_way(panel.without_heading(), most,
+                                             (lambda rect: _goes_on_from(rect, earlier)) if rivals else None)
+            if found or not rivals:
+                return found
+        return self._spots_in_first_way(panel, most)
+
+    def _spots_in_first_way(self, panel: Panel, most: int,
+                            allowed: Callable[[Rect], bool] | None = None) -> list[tuple[Panel, Panel, Rect]]:
+        """``panel``'s ``most`` best spots (of those ``allowed``) in the first of its ways that has any, as
+        :meth:`_candidates` gives them; none where no way fits."""
         for way in panel.ways:
-            spots = self._spots(way, most)
+            spots = self._spots(way, most, allowed)
             if spots:
                 return [(panel, way, rect) for rect in spots]
         return []
