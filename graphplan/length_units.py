@@ -272,7 +272,7 @@ def _joints_span(motion: Motion, link: int, named: set[str], start: str) -> tupl
     """The span (:meth:`~graphplan.motion.Motion.span`) of ``link``'s points that are no named points (its joints,
     a frame's pivots), with the two, ``start`` first where it is one (``"O–A"``); None for a link with one such point
     (a slider's block, a yoke), or whose such points stand at one place."""
-    span = motion.span(link, leaving_out=named)
+    span = motion.span(link, leaving_out=named, slots=False)
     if span is None or not span[0] > 0:
         return None
     first, second = span[1].split("–")

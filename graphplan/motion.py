@@ -168,20 +168,54 @@ class Motion:
         return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
                             for value in (motion.angle, motion.omega, motion.epsilon)))
 
-    def span(self, link: int | None = None, leaving_out: Collection[str] = ()) -> tuple[float, str] | None:
+    def span(self, link: int | None = None, leaving_out: Collection[str] = (),
+             slots: bool = True) -> tuple[float, str] | None:
         """The largest distance (m) between two points of ``link`` (the same at every position: the first's), or
         of the whole mechanism at the first position where ``link`` is None, with the two points (``"A–C"``); None
         for a link with one point (a slider's block).  What a link's mass, inertia or journal is weighed against;
-        ``leaving_out`` names points not to measure (the scene's named points, for the span of a link's joints)."""
+        ``leaving_out`` names points not to measure (the scene's named points, for the span of a link's joints).
+
+        With ``slots``, a moving link's body also reaches the ends of each slot or guide a block slides along on it,
+        as far as the block's joint travels over the positions (``"D–A at one end of its guide"``): a Whitworth
+        lever's slot runs on past its pivot away from the pin it drives, and its joints alone measured it a third as
+        long."""
         if link is None:
             names = sorted(name for name in self.points if name not in leaving_out)
         else:
             names = sorted(name for name in self.mechanism.fixed_on.get(link, ())
                            if name in self.points and name not in leaving_out)
         where = {name: complex(*self.point(name).r[0]) for name in names}
-        spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
+        # The frame's guides are the machine's bed, which bounds no journal: a slider-crank's frame measured to the
+        # piston's far end let a friction circle twice as wide as the crank is long pass at the crank's pivot.
+        moving = link is not None and link != self.mechanism.scene.frame_link
+        travels = self._slot_ends(link) if moving and slots else {}
+        for joint, ends in travels.items():
+            where |= {f"{joint} at one end of its guide": ends[0], f"{joint} at the other end of its guide": ends[1]}
+        labels = list(where)
+
+        def between(a: str, b: str) -> str:
+            joint = a.partition(" at ")[0]
+            return f"{joint}'s travel along its guide" if joint in travels and b.startswith(joint + " at ") \
+                else f"{a}–{b}"
+
+        spans = [(abs(where[a] - where[b]), between(a, b)) for n, a in enumerate(labels) for b in labels[n + 1:]
                  if math.isfinite(abs(where[a] - where[b]))]
         return max(spans) if spans else None
+
+    def _slot_ends(self, link: int) -> dict[str, tuple[complex, complex]]:
+        """Where the joint of each block sliding on ``link`` stands at the two ends of its travel, in the link as it
+        stands at the first position, by the joint's name; none where the block does not move along it."""
+        ends: dict[str, tuple[complex, complex]] = {}
+        for slide in self.slides:
+            s = np.broadcast_to(slide.s, (self.count,))
+            if slide.guide != link or slide.joint not in self.points or not np.all(np.isfinite(s)):
+                continue
+            start = complex(*self.point(slide.joint).r[0])
+            u = complex(np.broadcast_to(slide.u, (self.count,))[0])
+            lowest, highest = (start + (float(end) - float(s[0])) * u for end in (s.min(), s.max()))
+            if abs(highest - lowest) > 0:
+                ends[slide.joint] = lowest, highest
+        return ends
 
     def at_positions(self, indices: Sequence[int]) -> Motion:
         """The motion at some of its positions only, in the order given (their warnings renumbered)."""
