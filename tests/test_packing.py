@@ -5,6 +5,8 @@ it is placed, and takes room, without its own ("continued"), so that two parts t
 without the second heading share a sheet.
 """
 
+from graphplan.memo import RecentMemo
+from graphplan.render import packing
 from graphplan.render.force_rows import HEADING_LAYER
 from graphplan.render.formats import page_geometry
 from graphplan.render.packing import GAP_MM, Panel, pack
@@ -163,3 +165,28 @@ def test_a_force_sheet_with_friction_goes_on_no_sheet_before_the_last_part_of_th
         [["forces-5"], ["forces-5-2", "forces-friction-5"]]
     (_, second_rect, _), (_, friction_rect, _) = pages[1].placed
     assert friction_rect[3] <= second_rect[1] - GAP_MM + 1e-9
+
+
+def test_a_page_laid_out_afresh_is_remembered_as_laid_out_and_handed_out_as_a_page_of_its_own(monkeypatch):
+    """The V-twin's first sheet: the plan of positions and a plan sheet on a page that leaves no room for the
+    kinematic diagrams until it is laid out afresh (the test above).  The layout is remembered (the force sheets'
+    combinations of ways ask again for most of theirs); each asker gets a page of its own to go on filling."""
+    monkeypatch.setattr(packing, "_LAID_OUT_AFRESH", RecentMemo())
+    positions, plan, diagrams = (drawing("positions", 163, 123), drawing("plan-3", 538, 170, (315, 313)),
+                                 drawing("diagrams", 306, 312))
+    page = packing._empty_page("A1", "eskd", False)
+    assert page.place(positions) and page.place(plan) and not page.place(diagrams)
+    fresh = packing._laid_out_afresh(page, diagrams, packing._MOST_MOVES)
+    assert fresh is not None
+    first = packing._rearranged(page, diagrams)
+    assert first.placed == fresh.placed and first.drawings == fresh.drawings and first.growth == fresh.growth
+    first.place(drawing("note", 20, 20))
+    first.label = "filled"
+    again = packing._rearranged(page, diagrams)
+    assert again.placed == fresh.placed and again.drawings == fresh.drawings and again.label == ""
+    assert len(packing._LAID_OUT_AFRESH) == 1
+    # Another drawing of another size, though named alike, is laid out for itself.
+    taller = drawing("diagrams", 306, 900)
+    assert packing._laid_out_afresh(page, taller, packing._MOST_MOVES) is None
+    assert packing._rearranged(page, taller) is None
+    assert len(packing._LAID_OUT_AFRESH) == 2

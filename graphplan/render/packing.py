@@ -39,6 +39,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..errors import SceneError
+from ..memo import RecentMemo
 from .force_rows import HEADING_LAYER, has_heading, scales_line, with_scales_line
 from .formats import BIGGER, PADDING_MM, PageGeometry, Rect, check_sheet, holds, orientations, page_geometry
 from .primitives import Layer, bounds
@@ -659,7 +660,24 @@ def _room_by_rearranging(pages: list[Page], earliest: int, panel: Panel, stop: i
     return None
 
 
+# Pages laid out afresh, by the page and the drawing added: each combination of the force sheets' ways is packed
+# anew, and asks again for most of the layouts the one before it found (62 of 106 for the Stephenson six-bar's Russian
+# A1, a second of its 2.6).  Drawings are known by their ids, which each entry keeps from being reused by holding the
+# drawings themselves; the last few hundred are kept.
+_LAID_OUT_AFRESH: RecentMemo[tuple[tuple[Panel, ...], Page | None]] = RecentMemo()
+_MOST_LAYOUTS_KEPT = 256
+
+
 def _rearranged(page: Page, panel: Panel, moves: int = _MOST_MOVES) -> Page | None:
+    """:func:`_laid_out_afresh`, remembered: a page of its own each time, which the packing goes on filling."""
+    key = (page.size, page.frame, page.block, page.area, page.growth, page.corner, page.tuck,
+           tuple(map(id, page.drawings)), id(panel), moves)
+    _, fresh = _LAID_OUT_AFRESH.get(key, lambda: ((*page.drawings, panel), _laid_out_afresh(page, panel, moves)),
+                                    _MOST_LAYOUTS_KEPT)
+    return None if fresh is None else replace(fresh, placed=list(fresh.placed), drawings=list(fresh.drawings))
+
+
+def _laid_out_afresh(page: Page, panel: Panel, moves: int) -> Page | None:
     """``page`` laid out afresh with ``panel`` added, its drawings in other ways (a plan sheet with its
     mechanism above its plans, say) or grown otherwise (down a column where a block leaves no room beside the
     last drawing, say) where only that makes room, then with a drawing moved off the spot where it keeps them most
