@@ -234,6 +234,7 @@ def analyse(scene: Scene) -> Analysis:
                             + inertia_too_large(mechanism, motion) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
+                            + _working_stroke_quicker(mechanism, positions)
                             + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + resisting_forces_turning(mechanism, positions, motion)
@@ -271,7 +272,8 @@ def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
-                                 "inertia-too-large", "resisting-turns-round", "along-moving-point"})
+                                 "inertia-too-large", "resisting-turns-round", "along-moving-point",
+                                 "working-stroke-quicker"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
@@ -364,6 +366,34 @@ def _working_throughout(mechanism: Mechanism, positions: PositionSet) -> tuple[P
     return (PositionWarning(0, "working-throughout", (
         f"positions.working: link {working.link} moves {working.sense} over the whole driver.{driver.run_key}, so "
         f"every position is in the working stroke{unused}: is that the stroke it acts in?")),)
+
+
+# A quick-return mechanism does its work on its slow stroke, K = φw/φi some 1.25 to 2.5; the working sense typed the
+# other way round gives 1/K, 0.4 to 0.8, the cutting load on the quick return.  Below this K the sense is asked
+# about where a resisting load is given to the working stroke; a crank-rocker's K near 1 either way (the ratchet
+# feed's 0.89) is not.
+QUICKER_WORKING_K = 0.8
+
+
+def _working_stroke_quicker(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
+    """A warning where the working stroke is much the quicker (K below :data:`QUICKER_WORKING_K`) and a resisting
+    load is given to it: the working sense is likely the other way round, and every such load acts in the wrong
+    stroke."""
+    working, driver = mechanism.scene.positions.working, mechanism.driver
+    turns = positions.stroke_turns(driver.sense) if driver.cyclic else None
+    if working is None or turns is None or not turns[0] < QUICKER_WORKING_K * turns[1]:
+        return ()
+    resisted = [load.where for load in mechanism.scene.loads
+                if load.stroke is None and load.resisting and load.during not in ("always", "idle")]
+    if not resisted:
+        return ()
+    working_deg, idle_deg = (math.degrees(turn) for turn in turns)
+    return (PositionWarning(0, "working-stroke-quicker", (
+        f"positions.working: link {working.link}'s working stroke ({working.sense}) is the quicker one, "
+        f"K = φw/φi = {working_deg:.2f}°/{idle_deg:.2f}° = {turns[0] / turns[1]:.4f}, and {', '.join(resisted)} "
+        f"{'resists' if len(resisted) == 1 else 'resist'} it: a quick-return mechanism works on its slow stroke, "
+        f"which sense = \"{OTHER_SENSE[working.sense]}\" makes the working one (K = {turns[1] / turns[0]:.4f}); is "
+        f"{working.sense} its working sense?")),)
 
 
 def _never_applied(mechanism: Mechanism, stroke: str) -> str:
