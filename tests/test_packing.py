@@ -169,8 +169,9 @@ def test_a_force_sheet_with_friction_goes_on_no_sheet_before_the_last_part_of_th
 
 def test_a_page_laid_out_afresh_is_remembered_as_laid_out_and_handed_out_as_a_page_of_its_own(monkeypatch):
     """The V-twin's first sheet: the plan of positions and a plan sheet on a page that leaves no room for the
-    kinematic diagrams until it is laid out afresh (the test above).  The layout is remembered (the force sheets'
-    combinations of ways ask again for most of theirs); each asker gets a page of its own to go on filling."""
+    kinematic diagrams until it is laid out afresh (the first test of a page grown down a column).  The layout is
+    remembered (the force sheets' combinations of ways ask again for most of theirs); each asker gets a page of its
+    own to go on filling."""
     monkeypatch.setattr(packing, "_LAID_OUT_AFRESH", RecentMemo())
     positions, plan, diagrams = (drawing("positions", 163, 123), drawing("plan-3", 538, 170, (315, 313)),
                                  drawing("diagrams", 306, 312))

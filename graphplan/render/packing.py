@@ -661,9 +661,9 @@ def _room_by_rearranging(pages: list[Page], earliest: int, panel: Panel, stop: i
 
 
 # Pages laid out afresh, by the page and the drawing added: each combination of the force sheets' ways is packed
-# anew, and asks again for most of the layouts the one before it found (62 of 106 for the Stephenson six-bar's Russian
-# A1, a second of its 2.6).  Drawings are known by their ids, which each entry keeps from being reused by holding the
-# drawings themselves; the last few hundred are kept.
+# anew, and asks again for most of the layouts the one before it found (62 of 106 in the Stephenson six-bar's Russian
+# A1, some 13 % of that run).  Drawings are known by their ids, which each entry keeps from being reused by holding
+# the drawings themselves; the last few hundred are kept.
 _LAID_OUT_AFRESH: RecentMemo[tuple[tuple[Panel, ...], Page | None]] = RecentMemo()
 _MOST_LAYOUTS_KEPT = 256
 
