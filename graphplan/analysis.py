@@ -46,7 +46,7 @@ from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
 from .misreadings import SheetsDrawn, misread
-from .motion import Motion, PositionWarning, solve, toggles_between
+from .motion import ILL_CONDITIONED_DEG, Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
@@ -234,7 +234,7 @@ def analyse(scene: Scene) -> Analysis:
                             + inertia_too_large(mechanism, motion) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
-                            + _working_stroke_quicker(mechanism, positions)
+                            + _working_stroke_quicker(mechanism, positions) + _block_near_pivot(mechanism, paths)
                             + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + resisting_forces_turning(mechanism, positions, motion)
@@ -273,7 +273,7 @@ def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
                                  "inertia-too-large", "resisting-turns-round", "along-moving-point",
-                                 "working-stroke-quicker"})
+                                 "working-stroke-quicker", "block-near-pivot"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
@@ -394,6 +394,50 @@ def _working_stroke_quicker(mechanism: Mechanism, positions: PositionSet) -> tup
         f"{'resists' if len(resisted) == 1 else 'resist'} it: a quick-return mechanism works on its slow stroke, "
         f"which sense = \"{OTHER_SENSE[working.sense]}\" makes the working one (K = {turns[1] / turns[0]:.4f}); is "
         f"{working.sense} its working sense?")),)
+
+
+# How many times its middling speed a slotted lever turns by its pivot to be told whipping round (the block that
+# passes sin 1° of its reach from the pivot turns it some 29 times as fast as the crank, some 10 times its median).
+LEVER_WHIP = 10.0
+
+
+def _block_near_pivot(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarning, ...]:
+    """A warning where a slotted lever's block (an ``RPR`` with its slide through the pivot) passes nearer the pivot
+    than sin 1° of the farthest it gets, the bound of lines of action told ill-conditioned, turning there more than
+    :data:`LEVER_WHIP` times its median speed over the turn.  The lever turns as fast
+    as the block crosses it over its distance from the pivot: a Whitworth crank 1 mm shorter than its pivots are
+    apart whips the lever round at 79 times the crank's speed, its ε and inertia loads with it, and a hand plan
+    magnifies every slip there.  The lines of action of its plans cross square wherever the block is, so the
+    ill-conditioned positions never told it; at the pivot itself the lever has no direction (a singular position)."""
+    limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
+    driver = mechanism.driver
+    warnings = []
+    for group in mechanism.groups:
+        if group.kind != "RPR" or group.offset != 0.0:
+            continue
+        block, pivot = group.joints
+        lever = group.links[1]
+        distance = np.hypot(*(paths.point(block).r - paths.point(pivot).r).T)
+        if not np.isfinite(distance).any():
+            continue
+        nearest = int(np.nanargmin(distance))
+        farthest = float(np.nanmax(distance))
+        if not distance[nearest] < limit * farthest:
+            continue
+        turning = np.abs(paths.link(lever).omega)
+        omega = float(turning[nearest])
+        # A crank exactly as long as the pivots are apart carries the block through the pivot, the lever turning
+        # steadily at half its speed all the while (a singular position only at the pivot itself, told there).
+        if not omega > LEVER_WHIP * float(np.nanmedian(turning)):
+            continue
+        times = f", {omega / abs(driver.omega):.3g} times as fast as the crank" if driver.kind == "crank" else ""
+        warnings.append(PositionWarning(0, "block-near-pivot", (
+            f"group {group.label}: {block} passes {distance[nearest] * 1000:.3g} mm from the pivot {pivot} of link "
+            f"{lever} ({driver.describe(float(paths.driver[nearest]))}), under {limit * 100:.3g} % "
+            f"(sin {ILL_CONDITIONED_DEG:g}°) of the farthest it gets, {farthest:.4g} m: link {lever} turns there at "
+            f"{omega:.4g} rad/s{times}, its ε and inertia loads with it, and a plan drawn by hand magnifies every "
+            f"slip; on the pivot itself the lever has no direction")))
+    return tuple(warnings)
 
 
 def _never_applied(mechanism: Mechanism, stroke: str) -> str:

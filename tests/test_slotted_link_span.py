@@ -1,11 +1,15 @@
 """A slotted link is as long as its slot: a Whitworth quick-return's lever carries its pivot C and the pin D that
 drives the ram, 0.1 m apart, and a slot on the other side of C along which the crank pin A runs out to 0.22 m.  The
 checks that weigh a link's mass against a steel bar of its length (masses typed in grams) measured it by C and D
-alone and told a student that an ordinary 8 kg lever had its mass in grams."""
+alone and told a student that an ordinary 8 kg lever had its mass in grams.
+
+The same lever driven by a crank nearly as long as its pivots are apart passes its block by its pivot, where it whips
+round many times as fast as the crank: no position was told ill-conditioned (its plans' lines cross square)."""
 
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -107,3 +111,38 @@ def test_the_same_lever_in_grams_is_still_told_with_the_length_its_slot_gives_it
     told = capsys.readouterr().out
     assert "links.4.mass = 8000 kg on a link 0.3" in told
     assert "(D–A at " in told and "8000 g is links.4.mass = 8" in told
+
+
+def _crank(length: float) -> str:
+    return _scene(8.0).replace("length = 0.14\n", f"length = {length!r}\n", 1)
+
+
+def test_a_crank_a_millimetre_short_of_the_pivots_distance_is_told_the_lever_whips_round() -> None:
+    d, r, omega = 0.08, 0.079, 10.0  # O above C, the crank, its speed (rad/s)
+    (warning,) = [w for w in loads(_crank(r)).analyse().warnings if w.code == "block-near-pivot"]
+    found = re.search(r"A passes ([\d.]+) mm from the pivot C of link 4 \(φ = ([\d.]+)°\).* turns there at "
+                      r"([\d.]+) rad/s, ([\d.]+) times as fast as the crank", warning.detail)
+    assert found, warning.detail
+    distance, phi, turning, times = (float(value) for value in found.groups())
+    # A = O + r·(cos φ, sin φ) from C: |CA|² = r² + d² + 2·r·d·sin φ, and the lever's angle atan2(d + r·sin φ,
+    # r·cos φ) turns (r² + r·d·sin φ)/|CA|² times as fast as the crank; nearest d − r = 1 mm at φ = 270°.
+    sine = math.sin(math.radians(phi))
+    ca2 = r * r + d * d + 2 * r * d * sine
+    assert math.isclose(distance / 1000, math.sqrt(ca2), rel_tol=2e-3)
+    assert d - r - 1e-12 <= math.sqrt(ca2) <= 1.25 * (d - r)  # the sweep's sample nearest the pivot, a degree apart
+    assert math.isclose(times, abs(r * r + r * d * sine) / ca2, rel_tol=2e-3)
+    assert math.isclose(turning, times * omega, rel_tol=2e-3)
+
+
+def test_a_crank_well_short_of_the_pivots_distance_is_not_told() -> None:
+    assert not [w for w in loads(_crank(0.07)).analyse().warnings if w.code == "block-near-pivot"]
+    assert not [w for w in loads(_scene(8.0)).analyse().warnings if w.code == "block-near-pivot"]
+
+
+def test_the_note_hands_in_the_caution_under_its_initial_data(tmp_path: Path, capsys) -> None:
+    scene = tmp_path / "whitworth.toml"
+    scene.write_text(_crank(0.0775), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "positions,note"]) == 0
+    assert "warning: group II(3,4): A passes 2.5 mm from the pivot C of link 4" in capsys.readouterr().out
+    assert "the block of a slotted lever passes close to the lever's pivot" in (out / "note.md").read_text("utf-8")

@@ -64,5 +64,6 @@ BUNDLED = [*sorted(Path("fixtures").glob("*.toml")), *sorted(Path("tests/scenes"
 
 
 @pytest.mark.parametrize("scene", BUNDLED, ids=lambda path: path.stem)
-def test_no_bundled_scene_is_asked_about_its_working_sense(scene: Path) -> None:
-    assert not _quicker(scene.read_text(encoding="utf-8"))
+def test_no_bundled_scene_is_asked_about_its_working_sense_nor_told_of_a_block_by_its_pivot(scene: Path) -> None:
+    warnings = loads(scene.read_text(encoding="utf-8")).analyse().warnings
+    assert not [warning for warning in warnings if warning.code in ("working-stroke-quicker", "block-near-pivot")]
