@@ -396,19 +396,25 @@ def _working_stroke_quicker(mechanism: Mechanism, positions: PositionSet) -> tup
         f"{working.sense} its working sense?")),)
 
 
-# How many times its middling speed a slotted lever turns by its pivot to be told whipping round (the block that
-# passes sin 1° of its reach from the pivot turns it some 29 times as fast as the crank, some 10 times its median).
+# How many times its median speed over the turn a slotted lever turns by its pivot to be told whipping round: a
+# Whitworth lever whose block passes sin 1° of its reach from the pivot turns there some 60 times its median (30 times
+# the crank's speed), one whose block passes through the pivot steadily at its median.
 LEVER_WHIP = 10.0
 
 
 def _block_near_pivot(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarning, ...]:
     """A warning where a slotted lever's block (an ``RPR`` with its slide through the pivot) passes nearer the pivot
-    than sin 1° of the farthest it gets, the bound of lines of action told ill-conditioned, turning there more than
-    :data:`LEVER_WHIP` times its median speed over the turn.  The lever turns as fast
-    as the block crosses it over its distance from the pivot: a Whitworth crank 1 mm shorter than its pivots are
-    apart whips the lever round at 79 times the crank's speed, its ε and inertia loads with it, and a hand plan
-    magnifies every slip there.  The lines of action of its plans cross square wherever the block is, so the
-    ill-conditioned positions never told it; at the pivot itself the lever has no direction (a singular position)."""
+    than sin 1° of the farthest it gets, the bound of lines of action told ill-conditioned, the lever turning there
+    more than :data:`LEVER_WHIP` times its median speed over the turn.
+
+    The lever turns as fast as the block crosses it over its distance from
+    the pivot: a Whitworth crank 1 mm shorter than its pivots are apart
+    whips the lever round at 79 times the crank's speed, its ε and inertia
+    loads with it, and a hand plan magnifies every slip there.  The lines of
+    action of its plans cross square wherever the block is, so the
+    ill-conditioned positions never told it; at the pivot itself the lever
+    has no direction (a singular position).
+    """
     limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
     driver = mechanism.driver
     warnings = []
