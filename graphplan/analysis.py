@@ -51,7 +51,7 @@ from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, veloci
 from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
 from .scales import standard_scale
-from .scene import OTHER_SENSE, Scene
+from .scene import OTHER_SENSE, LoadSpec, Scene
 from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
 from .unit_slips import inertia_too_large, masses_in_grams, speed_in_rpm
 from .wording import balancing_symbol
@@ -383,8 +383,7 @@ def _working_stroke_quicker(mechanism: Mechanism, positions: PositionSet) -> tup
     turns = positions.stroke_turns(driver.sense) if driver.cyclic else None
     if working is None or turns is None or not turns[0] < QUICKER_WORKING_K * turns[1]:
         return ()
-    resisted = [load.where for load in mechanism.scene.loads
-                if load.stroke is None and load.resisting and load.during not in ("always", "idle")]
+    resisted = [load.where for load in _loads_of_stroke(mechanism, "working") if load.resisting]
     if not resisted:
         return ()
     working_deg, idle_deg = (math.degrees(turn) for turn in turns)
@@ -446,13 +445,19 @@ def _block_near_pivot(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarn
     return tuple(warnings)
 
 
+def _loads_of_stroke(mechanism: Mechanism, stroke: str) -> list[LoadSpec]:
+    """The loads given to ``stroke`` (``working`` or ``idle``) of the working link's strokes: a window or a diagram is
+    a share of the working stroke; a load with its own ``stroke`` moves with another link's and is not among them."""
+    def stroke_of(during) -> str | None:
+        return None if during == "always" else "idle" if during == "idle" else "working"
+
+    return [load for load in mechanism.scene.loads if load.stroke is None and stroke_of(load.during) == stroke]
+
+
 def _never_applied(mechanism: Mechanism, stroke: str) -> str:
     """The clause naming the loads of ``stroke`` (of the working link's strokes) that the run never applies; a load
     with its own ``stroke`` moves with another link's and is not among them."""
-    def stroke_of(during) -> str | None:  # a window is a share of the working stroke
-        return None if during == "always" else "idle" if during == "idle" else "working"
-
-    dropped = [load.where for load in mechanism.scene.loads if load.stroke is None and stroke_of(load.during) == stroke]
+    dropped = [load.where for load in _loads_of_stroke(mechanism, stroke)]
     if not dropped:
         return ""
     return f"; {', '.join(dropped)} of the {stroke} stroke {'is' if len(dropped) == 1 else 'are'} never applied"
