@@ -188,15 +188,17 @@ class Motion:
         # The frame's guides are the machine's bed, which bounds no journal: a slider-crank's frame measured to the
         # piston's far end let a friction circle twice as wide as the crank is long pass at the crank's pivot.
         moving = link is not None and link != self.mechanism.scene.frame_link
-        travels = self._slot_ends(link) if moving and slots else {}
-        for joint, ends in travels.items():
-            where |= {f"{joint} at one end of its guide": ends[0], f"{joint} at the other end of its guide": ends[1]}
+        # Each slot end by its label, with the joint whose travel it ends: the two ends of one slot are named as one.
+        end_of: dict[str, str] = {}
+        for joint, ends in (self._slot_ends(link) if moving and slots else {}).items():
+            for label, end in zip((f"{joint} at one end of its guide", f"{joint} at the other end of its guide"), ends,
+                                  strict=True):
+                where[label], end_of[label] = end, joint
         labels = list(where)
 
         def between(a: str, b: str) -> str:
-            joint = a.partition(" at ")[0]
-            return f"{joint}'s travel along its guide" if joint in travels and b.startswith(joint + " at ") \
-                else f"{a}–{b}"
+            joint = end_of.get(a)
+            return f"{joint}'s travel along its guide" if joint is not None and end_of.get(b) == joint else f"{a}–{b}"
 
         spans = [(abs(where[a] - where[b]), between(a, b)) for n, a in enumerate(labels) for b in labels[n + 1:]
                  if math.isfinite(abs(where[a] - where[b]))]
