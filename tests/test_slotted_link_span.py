@@ -89,7 +89,9 @@ def test_a_slotted_lever_spans_from_its_far_pin_to_where_the_block_runs_out_alon
     farthest = float(np.max(np.hypot(*(a - c).T)))
     length, between = motion.span(4)
     assert math.isclose(length, 0.10 + farthest, rel_tol=1e-12)
-    assert farthest > 0.2  # the crank's 0.14 m and the pivots' 0.08 m, nearly in line at some position
+    # Independently: the twelve positions from φ = 0 include φ = 90°, where A stands straight above O, the crank's
+    # 0.14 m and the pivots' 0.08 m in line, so the slot reaches 0.22 m from C and the lever 0.32 m from D.
+    assert math.isclose(farthest, 0.14 + 0.08, rel_tol=1e-12) and math.isclose(length, 0.32, rel_tol=1e-12)
     assert between.startswith("D–A at ") and between.endswith(" end of its guide")
     # Its joints alone, as the check of lengths typed in millimetres compares them with the lengths given.
     joints, named = motion.span(4, slots=False)
