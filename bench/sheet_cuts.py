@@ -71,9 +71,15 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     """The measurement of one scene in one locale on one sheet (``None``: the scene's own), in this interpreter."""
     from graphplan import run as run_module
     from graphplan.errors import SceneError
-    from graphplan.render import force_rows
+    from graphplan.memo import RecentMemo
+    from graphplan.render import force_rows, packing
     from graphplan.render import sheet as sheet_module
     from graphplan.render.packing import pack, reads_in_order
+
+    def forget_layouts() -> None:
+        # Each choice timed as the run makes it, from no layout remembered: the packing remembers the pages it laid
+        # out afresh (`packing._LAID_OUT_AFRESH`), and the run and the choices before would have filled it.
+        packing._LAID_OUT_AFRESH = RecentMemo()
 
     own = sheet_module.fewest_sheets_cuts
     own_choice = sheet_module.CutChoice
@@ -143,12 +149,14 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     # `force_sheet_choice.MOST_COMBINATIONS`).
     final = laid[-1].forces
     assert final[len(final) - len(after):] == tuple(after), "the run's last layout is not its last choice's"
+    forget_layouts()
     start = time.process_time()
     own_choice(cuts, after, chosen, form, *rows_apart).fewest(combined=True)
     used = time.process_time() - start
     sheets, in_order = taken(final[:len(final) - len(after)])
     choices = {"run": {"sheets": sheets, "in_order": in_order, "cpu_s": used, "of_run": used / base}}
     for label, most in (("greedy/4", usual), (f"greedy/{MORE_CUTS}", MORE_CUTS), ("greedy/all", ALL_CUTS)):
+        forget_layouts()
         start = time.process_time()
         parts = own([ways[:most] for ways in cuts], after, chosen, form, *rows_apart)
         used = time.process_time() - start
@@ -157,6 +165,7 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     # Every combination of the ways, those of the sheets with one way fixed, until the budget is spent.
     varied = [k for k, ways in enumerate(every.ways_of) if len(ways) > 1]
     total = math.prod(len(every.ways_of[k]) for k in varied)
+    forget_layouts()
     start = time.process_time()
     best, best_in_order, tried = math.inf, math.inf, 0
     for combination in itertools.product(*(range(len(every.ways_of[k])) for k in varied)):
@@ -223,9 +232,9 @@ def table(rows: list[dict]) -> str:
         c = row["choices"]
         ex = c["exhaustive"]
         shares = ", ".join(f"{100 * c[key]['of_run']:.2g} %" for key in (*CHOICES, "exhaustive"))
-        greedy = " | ".join(_sheets_cell(c[key]) for key in CHOICES)
+        sheets = " | ".join(_sheets_cell(c[key]) for key in CHOICES)
         lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | {row['force_sheets']} "
-                     f"({' '.join(map(str, row['ways']))}) | {greedy} | {ex['sheets']}, {ex['in_order_sheets']} "
+                     f"({' '.join(map(str, row['ways']))}) | {sheets} | {ex['sheets']}, {ex['in_order_sheets']} "
                      f"({ex['tried']} of {ex['combinations']}) | {timing} | {shares} |")
     return "\n".join(lines)
 
