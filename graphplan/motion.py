@@ -36,7 +36,7 @@ from .kinematics import (
 from .lookalikes import lookalike_hint
 from .mechanism import Mechanism, on_frame
 from .memo import OwnedMemo
-from .scene import PointSpec
+from .scene import PointSpec, Scene
 
 # A group whose lines of action cross at less than this angle (degrees) has
 # a transmission angle near 0° or 180°: it is solved, and it is warned of.
@@ -168,6 +168,10 @@ class Motion:
         return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
                             for value in (motion.angle, motion.omega, motion.epsilon)))
 
+    def guide(self, guide: Guide) -> GuideMotion:
+        """``guide``'s line over the positions, as a group solved after these reads it."""
+        return guide_motion(self.mechanism.scene, self.points, self.links, guide)
+
     def span(self, link: int | None = None, leaving_out: Collection[str] = (),
              slots: bool = True) -> tuple[float, str] | None:
         """The largest distance (m) between two points of ``link`` (the same at every position: the first's), or
@@ -265,6 +269,20 @@ class Motion:
                                                                         else "the mechanism has no sliding pair"))
 
 
+def guide_motion(scene: Scene, points: Mapping[str, PointMotion], links: Mapping[int, LinkMotion],
+                 guide: Guide) -> GuideMotion:
+    """``guide``'s line as ``points`` and ``links`` move it: a frame line by its name, a frame guide still, a guide on
+    a moving link turning with it."""
+    if guide.line is not None:
+        guide = scene.frame_lines[guide.line]
+    if on_frame(scene, guide):
+        origin = points[guide.through] if isinstance(guide.through, str) else PointMotion(complex(*guide.through), _STILL, _STILL)
+        return GuideMotion(scene.frame_link, origin, unit(guide.angle), 0.0, 0.0)
+    assert guide.link is not None and isinstance(guide.through, str)
+    link = links[guide.link]
+    return GuideMotion(guide.link, points[guide.through], link.u * unit(guide.angle), link.omega, link.epsilon)
+
+
 class _Context:
     """The motion found so far, as the groups ask for it while they solve."""
 
@@ -301,14 +319,7 @@ class _Context:
         return self.links[number]
 
     def guide(self, guide: Guide) -> GuideMotion:
-        if guide.line is not None:
-            guide = self._scene.frame_lines[guide.line]
-        if on_frame(self._scene, guide):
-            origin = self.points[guide.through] if isinstance(guide.through, str) else PointMotion(complex(*guide.through), _STILL, _STILL)
-            return GuideMotion(self._scene.frame_link, origin, unit(guide.angle), 0.0, 0.0)
-        assert guide.link is not None and isinstance(guide.through, str)
-        link = self.links[guide.link]
-        return GuideMotion(guide.link, self.points[guide.through], link.u * unit(guide.angle), link.omega, link.epsilon)
+        return guide_motion(self._scene, self.points, self.links, guide)
 
     def fail_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
         if bad.any():

@@ -20,7 +20,7 @@ from .errors import AssemblyError, GraphplanError, SingularPositionError, as_wri
 from .groups.base import Group
 from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
-from .motion import reference_at, solve
+from .motion import Motion, reference_at, solve
 from .positions import FULL_TURN, first_value, reach, travel_reach
 from .rounding import noise_floor
 from .scene import Scene
@@ -89,8 +89,11 @@ def _advised(mechanism: Mechanism, error: AssemblyError, first: float | None,
         rocking, changes = _rocking_changes(mechanism.scene)
         advice = _reach_advice(driver.link, ranges, driver.cyclic, stopping,
                                runs=functools.partial(_swing_that_runs, rocking), also=changes)
-        if driver.cyclic and ranges and (slipped := _slipped_digit(mechanism, error.group)) is not None:
-            advice += f"; or, if link {driver.link} is meant to turn round, check the lengths: {slipped}"
+        if driver.cyclic and ranges:
+            checks = [told for told in (_turning_round(mechanism, error.group),
+                                        _slipped_digit(mechanism, error.group)) if told is not None]
+            if checks:
+                advice += f"; or, if link {driver.link} is meant to turn round, check the lengths: {'; '.join(checks)}"
     if not ranges:
         advice += _placed_by(mechanism, error.group)
     return told(advice)
@@ -196,17 +199,33 @@ def _stopped_nowhere(mechanism: Mechanism, label: str) -> str | None:
     :meth:`~graphplan.groups.base.Group.nowhere`), read off the groups before it, in the assemblies the scene's
     first position gives them, over the turn or the parts of it where they assemble; None where the group has
     nothing to say, or those before it assemble nowhere either."""
+    return _read_off_before(mechanism, label, lambda group, before: group.nowhere(before), whole_turn=False)
+
+
+def _turning_round(mechanism: Mechanism, label: str) -> str | None:
+    """Where a crank reaches only part of its turn, what the lengths of the group ``label`` that stops it must be
+    for it to turn round (its :meth:`~graphplan.groups.base.Group.turning_round`), read off the groups before it
+    over the whole turn; None where those do not turn round themselves, or the group has nothing to say.  A
+    student told only where the first position failed lengthened the rod past that and was refused at the next."""
+    return _read_off_before(mechanism, label, lambda group, before: group.turning_round(before), whole_turn=True)
+
+
+def _read_off_before(mechanism: Mechanism, label: str, read: Callable[[Group, Motion], str | None],
+                     whole_turn: bool) -> str | None:
+    """What ``read`` says of the group ``label`` from the motion of the groups before it, in the assemblies the
+    scene's first position gives them, over the turn (``whole_turn``: all of it, else the parts of it where they
+    assemble); None where they assemble nowhere (or not all round, ``whole_turn``)."""
     step = next((n for n, unit in enumerate(mechanism.units) if n and unit.solver.label == label), None)
     if step is None:
         return None
     before = replace(mechanism, units=mechanism.units[:step])
     try:
         reference = reference_at(before, first_value(before))
-        ranges = reach(before, reference)
+        ranges = ((0.0, 2.0 * math.pi),) if whole_turn else reach(before, reference)
         if not ranges:
             return None
         values = np.concatenate([np.linspace(low, high, _NOWHERE_SWEEP + 1) for low, high in ranges])
-        return mechanism.units[step].solver.nowhere(solve(before, values, reference, tolerant=True))
+        return read(mechanism.units[step].solver, solve(before, values, reference, tolerant=True))
     except GraphplanError:
         return None
 

@@ -385,7 +385,8 @@ def test_an_rpr_slide_out_of_reach_names_its_offset_once(tmp_path, capsys) -> No
     """The quick-return fixture's slide set 0.25 m off the lever's pivot C (`offset = 0.25`): the crank pin A, 0.12 m
     from O and O 0.30 m from C, comes as near C as 0.18 m, where the block cannot reach the slide.  The refusal named
     groups[0].offset twice, in its arithmetic ("0.25 m from C (groups[0].offset)") and in the list of the scene's
-    keys that set it: named once, in the list with its value, by check and run alike."""
+    keys that set it: named in the list with its value, by check and run alike, and again only in the advice that
+    turns the crank round, with the size under A's nearest to C that does (the crank pointing down from O to C)."""
     fixture = (FIXTURES / "quick_return_slotted_lever.toml").read_text(encoding="utf-8")
     typed = "offset = 0.0             # the slot's centre line passes through C"
     assert typed in fixture and "C = [0.0, 0.0], O = [0.0, 0.30]" in fixture and "length  = 0.12" in fixture
@@ -397,5 +398,8 @@ def test_an_rpr_slide_out_of_reach_names_its_offset_once(tmp_path, capsys) -> No
         told = capsys.readouterr().err
         assert "the slide runs 0.25 m from C but A is only " in told, told
         assert "the scene's keys that set it: groups[0].offset = 0.25, " in told, told
-        assert told.count("groups[0].offset") == 1, told
+        assert told.count("groups[0].offset") == 2, told
+        assert told.rstrip().endswith("; or, if link 2 is meant to turn round, check the lengths: over the turn A "
+                                      "comes as near as 0.18 m to C (at φ = 270°), inside the slide's 0.25 m, so the "
+                                      "crank turns round only with groups[0].offset of a size under 0.1799 m"), told
     assert not (tmp_path / "out").exists()

@@ -1249,30 +1249,44 @@ def test_rrr_too_short_to_reach() -> None:
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     # The crank's reach told after it, as the Python interface tells it too: ±acos(−0.35) = ±110.4873°, inward.
+    # Then the lengths that turn it round: A–C = 0.5 ∓ 0.2 m at φ = 0° and 180°, so BC > 0.7 − 0.4 and |0.4 − BC| <
+    # 0.3; AB with BC = 0.2 would need AB > 0.5 and AB < 0.5, and is not named.
     assert str(error) == ("B cannot be assembled at position 5 (φ = 120°) in group II(3,4): "
                           "A–C = 0.6245 m > AB + BC = 0.6 m; the scene's keys that set it: groups[0].lengths = [0.4, "
                           "0.2], driver.length = 0.2, frame.points.O, frame.points.C; link 2 reaches only from "
                           "-110.48° to 110.48° (at each "
                           "end two links stand in line); since it cannot turn round, drive it as a rocker: "
-                          "driver.swing = [from, to] in degrees, e.g. driver.swing = [-109, 109]")
+                          "driver.swing = [from, to] in degrees, e.g. driver.swing = [-109, 109]; or, if link 2 is "
+                          "meant to turn round, check the lengths: over the turn A–C runs from 0.3 m (at φ = 0°) to "
+                          "0.7 m (at φ = 180°), so the crank turns round only where AB + BC > 0.7 m and |AB − BC| < "
+                          "0.3 m: groups[0].lengths[1] (BC) from 0.3001 m to 0.6999 m with AB as given")
     assert (error.joint, error.position, error.group) == ("B", "position 5 (φ = 120°)", "II(3,4)")
     assert error.keys == ("groups[0].lengths", "driver.length", "frame.points.O", "frame.points.C")
     assert error.reason.startswith("A–C = 0.6245 m > AB + BC = 0.6 m; the scene's keys that set it: ")
     assert isinstance(error, ValueError)
 
 
-@pytest.mark.parametrize(("base", "key", "typed", "meant"), [
-    ("SLIDER_CRANK", "groups.0.length", 0.04, "groups[0].length = 0.4, a digit off the 0.04 m given"),
-    ("FOUR_BAR", "groups.0.lengths", [0.04, 0.35], "groups[0].lengths[0] = 0.4, a digit off the 0.04 m given"),
+@pytest.mark.parametrize(("base", "key", "typed", "bounds", "meant"), [
+    # The crank's 0.1 m is as far as A comes from the guide through O.
+    ("SLIDER_CRANK", "groups.0.length", 0.04,
+     ("over the turn A comes as far as 0.1 m from the guide (at φ = 90°), so the crank turns round only where AB > "
+      "0.1 m: groups[0].length from 0.1001 m up"), "groups[0].length = 0.4, a digit off the 0.04 m given"),
+    # A–C = 0.5 ∓ 0.2 m: AB > 0.7 − 0.35 and |AB − 0.35| < 0.3.
+    ("FOUR_BAR", "groups.0.lengths", [0.04, 0.35],
+     ("over the turn A–C runs from 0.3 m (at φ = 0°) to 0.7 m (at φ = 180°), so the crank turns round only where "
+      "AB + BC > 0.7 m and |AB − BC| < 0.3 m: groups[0].lengths[0] (AB) from 0.3501 m to 0.6499 m with BC as given"),
+     "groups[0].lengths[0] = 0.4, a digit off the 0.04 m given"),
 ])
-def test_a_length_a_digit_off_is_named_beside_the_rocker_advised(base, key, typed, meant) -> None:
+def test_a_length_a_digit_off_is_named_beside_the_rocker_advised(base, key, typed, bounds, meant) -> None:
     """A student's DE = 0.05 for 0.5 was told only to rock the crank over the part of its turn it reaches: the
-    length that, a digit off, lets it turn round is named too, and the scene with it runs round."""
+    bounds its lengths must keep to turn round are named, and the length that, a digit off, lets it, and the scene
+    with it runs round."""
     scene = globals()[base]
     stage, error = first_error(to_toml(variant(scene, {key: typed})))
     assert stage == "solve" and type(error) is AssemblyError
     assert "drive it as a rocker" in str(error)
-    assert str(error).endswith(f"; or, if link 2 is meant to turn round, check the lengths: {meant}, turns it round")
+    assert str(error).endswith(f"; or, if link 2 is meant to turn round, check the lengths: {bounds}; {meant}, "
+                               f"turns it round")
     # The length as meant: the mechanism turns round (it is the scene this file starts from).
     analyse(scene_module.loads(to_toml(scene)))
 

@@ -8,6 +8,7 @@ at once.  The registry in ``groups/__init__.py`` maps ``kind`` to the class.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
@@ -198,6 +199,13 @@ class Group:
         lever's pivot than the block ever comes); None where the lengths are to check."""
         return None
 
+    def turning_round(self, before) -> str | None:
+        """Where the crank reaches only part of its turn and this group stops it, what its own lengths must be for
+        the crank to turn round, read off ``before``, the motion of the groups before it over the whole turn (an
+        RRR's A–C from its nearest to its farthest); None where they are not what stops it, or the group has
+        nothing to say."""
+        return None
+
     # Membership, used to check the structure and to place named points.
     def known_joints(self) -> tuple[str, ...]:
         """Joints that must be known before this group is solved."""
@@ -273,6 +281,24 @@ def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -
         lambda i, at: SingularPositionError(at, group.label, f"{what}: the lines of action of the velocity plan "
                                                              f"are parallel{_sine(sine, i)}"),
     )
+
+
+# A bound that is a four-figure number to rounding (0.7 − 0.4 = 0.29999999999999993) is that number, not below it:
+# in quanta of the fourth figure, this close to a whole one.
+_FIGURES_ROUNDING = 1e-6
+
+
+def figures_above(value: float) -> float:
+    """The least number of four significant figures above ``value``: a length that clears a bound where links
+    stand in line (at the bound itself they would, a toggle at one angle)."""
+    quantum = 10.0 ** (math.floor(math.log10(value)) - 3)
+    return (math.floor(value / quantum + _FIGURES_ROUNDING) + 1) * quantum
+
+
+def figures_below(value: float) -> float:
+    """The greatest number of four significant figures below ``value``, as :func:`figures_above`."""
+    quantum = 10.0 ** (math.floor(math.log10(value)) - 3)
+    return (math.ceil(value / quantum - _FIGURES_ROUNDING) - 1) * quantum
 
 
 def told_apart(larger: float, smaller: float) -> tuple[str, str]:

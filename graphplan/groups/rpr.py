@@ -31,7 +31,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
-from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, refuse_branch
+from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, figures_below, refuse_branch
 from .sliding import coriolis, coriolis_letter
 
 if TYPE_CHECKING:
@@ -80,6 +80,20 @@ class RPR(Group):
         return (f"{a_name} comes no farther than {reach:.6g} m from {c_name} "
                 f"(at {before.mechanism.driver.describe(float(before.driver[farthest]))}), short of the slide's "
                 f"{abs(self.offset):.6g} m: give {self.where}.offset a size under {under:.6g} m")
+
+    def turning_round(self, before: Motion) -> str | None:
+        """A's nearest to C over the turn ``before`` the group, where that falls inside the slide's offset: the
+        block reaches the slide wherever A is no nearer C than the offset."""
+        a_name, c_name = self.joints
+        gaps = np.abs(before.points[a_name].r - before.points[c_name].r)
+        nearest = int(np.argmin(gaps))
+        least = float(gaps[nearest])
+        if least >= abs(self.offset) or least == 0.0:
+            return None
+        place = before.mechanism.driver.describe(float(before.driver[nearest]))
+        return (f"over the turn {a_name} comes as near as {least:.6g} m to {c_name} (at {place}), inside the slide's "
+                f"{abs(self.offset):.6g} m, so the crank turns round only with {self.where}.offset of a size under "
+                f"{figures_below(least):.6g} m")
 
     @property
     def coincident(self) -> str:

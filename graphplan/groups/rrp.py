@@ -41,6 +41,7 @@ from .base import (
     Guide,
     at_toggle,
     check_lines_cross,
+    figures_above,
     nearest_branch,
     read_branch,
     read_guide,
@@ -87,6 +88,19 @@ class RRP(Group):
 
     def guides(self) -> tuple[Guide, ...]:
         return (self.guide,)
+
+    def turning_round(self, before) -> str | None:
+        """A's farthest from the guide over the turn ``before`` the group: B closes where AB reaches that far."""
+        a, b = self.joints
+        guide = before.guide(self.guide)
+        heights = np.abs(cross(guide.u, before.points[a].r - guide.origin.r))
+        farthest = int(np.argmax(heights))
+        most = float(heights[farthest])
+        if self.length >= most:
+            return None
+        place = before.mechanism.driver.describe(float(before.driver[farthest]))
+        return (f"over the turn {a} comes as far as {most:.6g} m from the guide (at {place}), so the crank turns round "
+                f"only where {a}{b} > {most:.6g} m: {self.where}.length from {figures_above(most):.6g} m up")
 
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b = self.joints

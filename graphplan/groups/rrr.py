@@ -26,6 +26,8 @@ from .base import (
     GroupMotion,
     at_toggle,
     check_lines_cross,
+    figures_above,
+    figures_below,
     nearest_branch,
     read_branch,
     told_apart,
@@ -55,6 +57,29 @@ class RRR(Group):
 
     def new_joints(self) -> tuple[str, ...]:
         return (self.joints[1],)
+
+    def turning_round(self, before) -> str | None:
+        """A–C's nearest and farthest over the turn ``before`` the group: B closes where |AB − BC| ≤ A–C ≤ AB + BC,
+        so the crank turns round where both hold at those two, and each length's range for that, the other as
+        given."""
+        a, b, c = self.joints
+        spans = np.abs(before.points[a].r - before.points[c].r)
+        nearest, farthest = int(np.argmin(spans)), int(np.argmax(spans))
+        least, most = float(spans[nearest]), float(spans[farthest])
+        ab, bc = self.lengths
+        if ab + bc >= most and abs(ab - bc) <= least:
+            return None
+        near, far = (before.mechanism.driver.describe(float(before.driver[index])) for index in (nearest, farthest))
+        told = (f"over the turn {a}–{c} runs from {least:.6g} m (at {near}) to {most:.6g} m (at {far}), so the crank "
+                f"turns round only where {a}{b} + {b}{c} > {most:.6g} m and |{a}{b} − {b}{c}| < {least:.6g} m")
+        ranges = []
+        for k, (name, other, other_name) in enumerate(((f"{a}{b}", bc, f"{b}{c}"), (f"{b}{c}", ab, f"{a}{b}"))):
+            bound, high = max(most - other, other - least), figures_below(other + least)
+            # Where A–C never varies from the other length, any length short of twice it closes.
+            span = f"under {high:.6g} m" if bound <= 0 else f"from {figures_above(bound):.6g} m to {high:.6g} m"
+            if bound <= 0 or figures_above(bound) < high:
+                ranges.append(f"{self.where}.lengths[{k}] ({name}) {span} with {other_name} as given")
+        return f"{told}: {', or '.join(ranges)}" if ranges else told
 
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b, c = self.joints
