@@ -59,10 +59,10 @@ def svg_runs(element) -> tuple[tuple[str, int, float], ...]:
     """(text, place, size over the line's) of each run of an SVG text, as its tspans set them: a smaller tspan set
     under the line is an index, one over it a component; runs at one place and size joined."""
     line_size = float(element.get("font-size"))
+    baseline = float(element.get("y"))
     found: list[tuple[str, int, float]] = []
-    lowered = 0.0
     for span in element.iter(f"{SVG}tspan"):
-        lowered += float(span.get("dy", "0"))
+        lowered = float(span.get("y")) - baseline
         size = float(span.get("font-size", line_size))
         place = LINE if size == line_size else BELOW if lowered > 0 else ABOVE
         scale = size / line_size

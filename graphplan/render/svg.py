@@ -135,26 +135,25 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
             element = document.text(item.text, insert=(x, y))
             attributes = {"font-family": font_family(item.text), "text-anchor": item.anchor}
         else:
-            # Set run by run from its start, which the first run is placed at: cairosvg would anchor every run on its
-            # own.  The text keeps its anchor, where a reader of the SVG finds it, as for a text set whole.
-            start = {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
+            # Set run by run, each at its own x from the text's start, worked out from the runs' widths: a run that
+            # flows on from the one before is anchored on its own by cairosvg, and set by WeasyPrint (note.pdf) with
+            # the text's anchor laid over the runs, every index over its letter (S₂ a struck-through S) and μa's
+            # scale after its number.  The text keeps its anchor, where a reader of the SVG finds it, as for a text
+            # set whole.
+            pen = float(x) + {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
             element = document.text("", insert=(x, y))
             mixed = has_wide(item.text)
             attributes = {"font-family": CJK_FONT_FAMILY if mixed else FONT_FAMILY, "text-anchor": item.anchor}
-            lowered = 0.0
-            for number, (run, wide, place) in enumerate(segments):
+            for run, wide, place in segments:
                 span = document.tspan(run)
-                span.attribs["text-anchor"] = "start"
-                if number == 0:
-                    span.attribs["x"] = _n(float(x) + start)
+                scale = _scale(place, item.size)
+                span.attribs.update({"text-anchor": "start", "x": _n(pen),
+                                     "y": _n(float(y) + _lowered(run, place, item.size) * size)})
                 if mixed:
                     span.attribs["font-family"] = CJK_FONT_FAMILY if wide else FONT_FAMILY
                 if place != LINE:
-                    span.attribs["font-size"] = _n(size * _scale(place, item.size))
-                # A run's dy moves the line's pen from where the run before it left it.
-                if (depth := _lowered(run, place, item.size)) != lowered:
-                    span.attribs["dy"] = _n((depth - lowered) * size)
-                    lowered = depth
+                    span.attribs["font-size"] = _n(size * scale)
+                pen += width_em(((run, wide),), item.weight) * scale * size
                 element.add(span)
         attributes.update({"font-size": _n(size), "fill": item.colour})
         if item.weight != "normal":
