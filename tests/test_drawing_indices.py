@@ -69,13 +69,27 @@ def test_the_title_block_is_written_as_the_user_wrote_it():
     assert block.items[0].runs == () and labels.items[0].runs == (("R", LINE), ("12", BELOW))
 
 
-@pytest.mark.parametrize("symbol", ["R12", "R23τ", "Fu2", "Mи3", "ω2", "ε4", "μV", "μt", "μφ", "ΔWmax", "JF", "sB",
-                                    "hu4", "hи3", "hb", "hу", "aBA^τ"])
+@pytest.mark.parametrize("symbol", ["R12", "R23τ", "Fu2", "Mи3", "ω2", "ε4", "μV", "μt", "μφ", "μW", "μE", "ΔWmax",
+                                    "JF", "sB", "hu4", "hи3", "hb", "hу", "aBA^τ"])
 def test_a_symbol_is_indexed_as_the_note_indexes_it(symbol):
     """The drawing's runs and the note's HTML set the same part of a symbol below and above the line."""
     html = "".join(text if place == LINE else f"<{'sub' if place == BELOW else 'sup'}>{text}</{'sub' if place == BELOW else 'sup'}>"
                    for text, place in runs(symbol.replace("^", "")))
     assert html == symbols_html(symbol)
+
+
+def test_every_scale_of_the_dynamics_drawing_is_indexed_in_each_language():
+    """The Chinese dynamics drawing's μW and μE (works, energy) were set flat beside its indexed μM and μφ, and every
+    language's μm of the reduced mass; a micrometre in words stays as written."""
+    from graphplan.locale import strings
+
+    for locale in ("en", "ru", "zh"):
+        text = strings(locale)
+        for key in ("dyn_moment_scale", "dyn_work_scale", "dyn_energy_scale", "dyn_mass_scale", "dyn_inertia_scale"):
+            scale = text[key].format(value="0.5")
+            assert runs(scale)[:2] == (("μ", LINE), (scale[1], BELOW)), (locale, key, scale)
+            assert symbols_html(scale).startswith(f"μ<sub>{scale[1]}</sub> = "), (locale, key)
+    assert runs("a coating 5 μm thick") == () and symbols_html("5 μm") == "5 μm"
 
 
 def _indexed(text: str, anchor: str = "middle", at=(60.0, 15.0), size: float = 3.5) -> list[Layer]:

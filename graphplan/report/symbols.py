@@ -44,8 +44,9 @@ SYMBOL = re.compile(
     # A rocker's angle (ψ4) is indexed by its link as its ω and ε are.
     r"|(?P<base2>[ωεψ])(?P<index2>\d+)"
     # A scale: of velocities, accelerations, forces and lengths, and the diagrams' (μs, μv, μt, μφ, μψ, μω, με, μM, μT,
-    # μJ, μA).
-    r"|(?P<base3>μ)(?P<index3>[VaFlvstφψωεMTJA])"
+    # μJ, μA; in Chinese the works' and the energy's μW, μE), and the reduced mass's μm where it is given, not the
+    # micrometre.
+    r"|(?P<base3>μ)(?P<index3>[VaFlvstφψωεMTJAWE]|m(?= = ))"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
     # A Russian textbook's inertia loads and balancing load (Fи3, Mи3, Mу, Mу0, Fу), the locale's spelling of Fu3, Mb.
     r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[иу]\d*|[пдст])"
