@@ -57,19 +57,26 @@ def texts_of(dxf: str) -> list:
 
 def svg_runs(element) -> tuple[tuple[str, int, float], ...]:
     """(text, place, size over the line's) of each run of an SVG text, as its tspans set them: a smaller tspan set
-    under the line is an index, one over it a component; runs at one place and size joined."""
+    under the line is an index, one over it a component; runs at one place and size joined.  The spaces the SVG
+    hangs on the end of a run (a renderer drops them at the start of the run after it, which stands at its own x)
+    are read back at the start of the run they were cut with."""
     line_size = float(element.get("font-size"))
     baseline = float(element.get("y"))
     found: list[tuple[str, int, float]] = []
+    carried = ""
     for span in element.iter(f"{SVG}tspan"):
         lowered = float(span.get("y")) - baseline
         size = float(span.get("font-size", line_size))
         place = LINE if size == line_size else BELOW if lowered > 0 else ABOVE
         scale = size / line_size
+        text = span.text.rstrip(" ")
         if found and found[-1][1] == place and found[-1][2] == pytest.approx(scale):
-            found[-1] = (found[-1][0] + span.text, place, scale)
+            found[-1] = (found[-1][0] + carried + text, place, scale)
         else:
-            found.append((span.text, place, scale))
+            found.append((carried + text, place, scale))
+        carried = span.text[len(text):]
+    if carried:
+        found[-1] = (found[-1][0] + carried, *found[-1][1:])
     return tuple(found)
 
 

@@ -31,6 +31,9 @@ TEXTS = [
     Text((100.0, 35.0), "R14τ", 3.5, "end"),
     Text((60.0, 20.0), "杆组 II(3,4) 的力分析", 3.5, "middle"),
     Text((60.0, 8.0), "+ G3·h2 − Fu3·h3", 3.5, "middle"),
+    # A lever's arms as its caption lists them, two spaces apart: a run set at its own x loses the spaces before its
+    # first letter and sets two in a row as one, and placed by the spaces as typed stood a space off its letter.
+    Text((60.0, 2.0), "h5 = 3.359 mm,  h6 = 9.334 mm", 3.5, "middle"),
 ]
 
 
@@ -79,8 +82,14 @@ def test_a_figure_s_indexed_and_mixed_texts_stand_in_note_pdf_where_they_were_la
 
 
 def test_an_index_stands_below_its_letter_and_a_component_above(tmp_path) -> None:
-    """S₂'s 2 lower than its S; R₁₄ with its τ raised above the 14."""
-    _, s2, r14, *_ = _typeset(tmp_path)
+    """S₂'s 2 lower than its S; R₁₄ with its τ raised above the 14; each index right after its letter, as close as
+    the letters of a word stand, after spaces before it and two in a row alike."""
+    _, s2, r14, *_, arms = _typeset(tmp_path)
+    # PDFium's boxes are the glyphs' ink: h₅ at the text's start and h₆ after two spaces stand their index as far
+    # off, where a space's width more had parted the second.
+    gaps = [box[0] - arms[k - 1][1][2] for k, (character, box) in enumerate(arms)
+            if character.isdigit() and arms[k - 1][0] == "h"]
+    assert len(gaps) == 2 and abs(gaps[1] - gaps[0]) < 0.1, gaps
     (_, s), (_, two) = s2
     assert two[1] < s[1] and two[3] < s[3]
     (_, r), (_, one), (_, four), (_, tau) = r14

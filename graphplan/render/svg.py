@@ -8,6 +8,7 @@ the same bytes every time.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from .indices import ABOVE, BELOW, LINE
@@ -68,15 +69,43 @@ def _segments(item: Text) -> tuple[tuple[str, bool, int], ...]:
     return tuple((run, wide, place) for text, place in item.runs for run, wide in script_runs(text))
 
 
-def _width_em(segments: tuple[tuple[str, bool, int], ...], weight: str, size: float) -> float | None:
-    """How wide the segments are set (em of the line's font), or None where a CJK font's widths cannot be read."""
-    total = 0.0
+# Spaces in a row, which a renderer sets as one.
+_ONE_SPACE = re.compile(" {2,}")
+
+
+def _set_runs(item: Text, segments: tuple[tuple[str, bool, int], ...]
+              ) -> tuple[list[tuple[str, float, bool, int, str]], float] | None:
+    """Each run of ``segments`` as written, where it starts (em of the line's font from the text's start), its font
+    and place and the run it was cut as, and the width the runs take (em), as cairosvg and WeasyPrint set runs each
+    at its own x: there a run's spaces before its first letter are dropped and spaces in a row set as one, so those
+    are hung on the end of the run before it (the text reads as written) and one space of them left between the two
+    (runs placed by their spaces as typed read "h ₁₄" after "mm,  h").  None where the text is set whole, or a CJK
+    font's widths cannot be read."""
+    if not segments:
+        return None
+    placed: list[list] = []
+    pen, after_space = 0.0, False
     for run, wide, place in segments:
-        width = width_em(((run, wide),), weight)
-        if width is None:
+        scale = _scale(place, item.size)
+        letters = run.lstrip(" ") if placed else run
+        if len(letters) < len(run):
+            placed[-1][0] += run[:len(run) - len(letters)]
+            space = width_em(((" ", wide),), item.weight)
+            if space is None:
+                return None
+            if not after_space:
+                pen += space * scale
+                after_space = True
+        if not letters:
+            continue
+        shown = _ONE_SPACE.sub(" ", letters)
+        advance = width_em(((shown, wide),), item.weight)
+        if advance is None:
             return None
-        total += width * _scale(place, size)
-    return total
+        placed.append([letters, pen, wide, place, run])
+        pen += advance * scale
+        after_space = shown.endswith(" ")
+    return [tuple(run) for run in placed], pen
 
 
 def _n(value: float) -> str:
@@ -128,32 +157,29 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
     def text(item: Text):
         x, y = xy(item.at)
         size = item.size * FONT_SIZE_PER_CAP
-        segments = _segments(item)
-        width = _width_em(segments, item.weight, item.size) if segments else None
+        runs = _set_runs(item, _segments(item))
         # The attributes gathered in the order they are written and set at once: svgwrite sets each in a call.
-        if width is None:
+        if runs is None:
             element = document.text(item.text, insert=(x, y))
             attributes = {"font-family": font_family(item.text), "text-anchor": item.anchor}
         else:
-            # Set run by run, each at its own x from the text's start, worked out from the runs' widths: a run that
-            # flows on from the one before is anchored on its own by cairosvg, and set by WeasyPrint (note.pdf) with
-            # the text's anchor laid over the runs, every index over its letter (S₂ a struck-through S) and μa's
-            # scale after its number.  The text keeps its anchor, where a reader of the SVG finds it, as for a text
-            # set whole.
-            pen = float(x) + {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
+            # Set run by run, each at its own x and y: a run that flows on from the one before is anchored on its own
+            # by cairosvg, and set by WeasyPrint (note.pdf) with the text's anchor laid over the runs, every index
+            # over its letter (S₂ a struck-through S) and μa's scale after its number.  The text keeps its anchor,
+            # where a reader of the SVG finds it, as for a text set whole.
+            placed, width = runs
+            start = float(x) + {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
             element = document.text("", insert=(x, y))
             mixed = has_wide(item.text)
             attributes = {"font-family": CJK_FONT_FAMILY if mixed else FONT_FAMILY, "text-anchor": item.anchor}
-            for run, wide, place in segments:
-                span = document.tspan(run)
-                scale = _scale(place, item.size)
-                span.attribs.update({"text-anchor": "start", "x": _n(pen),
+            for written, offset, wide, place, run in placed:
+                span = document.tspan(written)
+                span.attribs.update({"text-anchor": "start", "x": _n(start + offset * size),
                                      "y": _n(float(y) + _lowered(run, place, item.size) * size)})
                 if mixed:
                     span.attribs["font-family"] = CJK_FONT_FAMILY if wide else FONT_FAMILY
                 if place != LINE:
-                    span.attribs["font-size"] = _n(size * scale)
-                pen += width_em(((run, wide),), item.weight) * scale * size
+                    span.attribs["font-size"] = _n(size * _scale(place, item.size))
                 element.add(span)
         attributes.update({"font-size": _n(size), "fill": item.colour})
         if item.weight != "normal":
