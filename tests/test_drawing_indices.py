@@ -159,8 +159,9 @@ def test_a_mixed_line_s_symbols_are_indexed_in_their_script_s_font():
         pytest.skip("fontconfig with DejaVu Sans and Noto Sans CJK is needed to measure mixed lines")
     text = next(ElementTree.fromstring(to_svg(_indexed("平衡力矩 Mb = 49.02 N·m"))).iter(f"{SVG}text"))
     spans = [(span.text, span.get("font-family").split(",")[0], span.get("font-size")) for span in text.iter(f"{SVG}tspan")]
-    assert spans[0][:2] == ("平衡力矩", "Noto Sans CJK SC")
-    assert spans[1][:2] == (" M", "DejaVu Sans") and spans[2][0] == "b" and spans[2][2] is not None
+    # The space between the scripts hung on the CJK run: a run set at its own x loses the spaces it starts with.
+    assert spans[0][:2] == ("平衡力矩 ", "Noto Sans CJK SC")
+    assert spans[1][:2] == ("M", "DejaVu Sans") and spans[2][0] == "b " and spans[2][2] is not None
 
 
 def test_a_sheet_sets_its_reactions_indices_and_leaves_its_title_block_alone(tmp_path):
