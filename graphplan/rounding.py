@@ -49,12 +49,35 @@ def noise_floor(values: Any) -> float:
     return largest_finite(values) * RELATIVE_NOISE
 
 
+def digit_unit(value: float, digits: int) -> float:
+    """The unit of the last of ``digits`` significant digits of ``value`` (> 0): 0.0001 for 0.7295 to four."""
+    return 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+
+
 def rounded_up(value: float, digits: int = 2) -> float:
     """``value`` (> 0) to ``digits`` significant digits, rounded up: the least a refusal asks for, which rounded to
     the nearest could be a value the same refusal refuses."""
-    unit = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+    unit = digit_unit(value, digits)
     return float(f"{math.ceil(value / unit) * unit:.{digits}g}")
 
 
-__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor", "rounded_up",
-           "written_as_nought"]
+# A bound that is a four-figure number to rounding (0.7 − 0.4 = 0.29999999999999993) is that number, not below it:
+# in units of the fourth figure, this close to a whole one.
+_FIGURES_ROUNDING = 1e-6
+
+
+def figures_above(value: float) -> float:
+    """The least number of four significant figures above ``value`` (> 0): a bound offered that clears the one it
+    bounds, which met would still fail (a length that just closes a group stands its links in line)."""
+    unit = digit_unit(value, 4)
+    return (math.floor(value / unit + _FIGURES_ROUNDING) + 1) * unit
+
+
+def figures_below(value: float) -> float:
+    """The greatest number of four significant figures below ``value`` (> 0), as :func:`figures_above`."""
+    unit = digit_unit(value, 4)
+    return (math.ceil(value / unit - _FIGURES_ROUNDING) - 1) * unit
+
+
+__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "digit_unit",
+           "figures_above", "figures_below", "largest_finite", "noise_floor", "rounded_up", "written_as_nought"]

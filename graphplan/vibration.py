@@ -48,7 +48,7 @@ from .rotor_lengths import (
     LengthsInMillimetres,
     lightest_rotor,
 )
-from .rounding import ROUNDING_NOISE, written_as_nought
+from .rounding import ROUNDING_NOISE, digit_unit, written_as_nought
 from .table_keys import keys_of_other_tables
 from .units import RPM, STANDARD_GRAVITY, motor_speed_in_rpm, percentage_question, rpm_question
 
@@ -706,7 +706,7 @@ def stiffness_warning(spec: VibrationSpec) -> str | None:
 def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
     """``value`` to ``digits`` significant digits, rounded down or up (a bound offered must keep what it bounds), with
     no exponent."""
-    step = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+    step = digit_unit(value, digits)
     bound = (math.floor if down else math.ceil)(value / step) * step
     return np.format_float_positional(bound, precision=digits, unique=False, fractional=False, trim="-")
 

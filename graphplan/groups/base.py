@@ -8,7 +8,6 @@ at once.  The registry in ``groups/__init__.py`` maps ``kind`` to the class.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
@@ -281,24 +280,6 @@ def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -
         lambda i, at: SingularPositionError(at, group.label, f"{what}: the lines of action of the velocity plan "
                                                              f"are parallel{_sine(sine, i)}"),
     )
-
-
-# A bound that is a four-figure number to rounding (0.7 − 0.4 = 0.29999999999999993) is that number, not below it:
-# in quanta of the fourth figure, this close to a whole one.
-_FIGURES_ROUNDING = 1e-6
-
-
-def figures_above(value: float) -> float:
-    """The least number of four significant figures above ``value``: a length that clears a bound where links
-    stand in line (at the bound itself they would, a toggle at one angle)."""
-    quantum = 10.0 ** (math.floor(math.log10(value)) - 3)
-    return (math.floor(value / quantum + _FIGURES_ROUNDING) + 1) * quantum
-
-
-def figures_below(value: float) -> float:
-    """The greatest number of four significant figures below ``value``, as :func:`figures_above`."""
-    quantum = 10.0 ** (math.floor(math.log10(value)) - 3)
-    return (math.ceil(value / quantum - _FIGURES_ROUNDING) - 1) * quantum
 
 
 def told_apart(larger: float, smaller: float) -> tuple[str, str]:

@@ -31,7 +31,8 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
-from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, figures_below, refuse_branch
+from ..rounding import digit_unit, figures_below
+from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, refuse_branch
 from .sliding import coriolis, coriolis_letter
 
 if TYPE_CHECKING:
@@ -75,7 +76,7 @@ class RPR(Group):
         if reach > abs(self.offset) or reach == 0.0:
             return None
         # To four figures, rounded down, so that an offset of the size written reaches at the farthest.
-        quantum = 10.0 ** (math.floor(math.log10(reach)) - 3)
+        quantum = digit_unit(reach, 4)
         under = math.floor(reach / quantum) * quantum
         return (f"{a_name} comes no farther than {reach:.6g} m from {c_name} "
                 f"(at {before.mechanism.driver.describe(float(before.driver[farthest]))}), short of the slide's "

@@ -33,6 +33,7 @@ from ..kinematics import (
 )
 from ..plans import Builder, Plan
 from ..reader import Table
+from ..rounding import figures_above
 from .base import (
     UNREAD_GUIDE,
     Context,
@@ -41,7 +42,6 @@ from .base import (
     Guide,
     at_toggle,
     check_lines_cross,
-    figures_above,
     nearest_branch,
     read_branch,
     read_guide,

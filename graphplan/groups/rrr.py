@@ -20,14 +20,13 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, Scalar, carried, norm2
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
+from ..rounding import figures_above, figures_below
 from .base import (
     Context,
     Group,
     GroupMotion,
     at_toggle,
     check_lines_cross,
-    figures_above,
-    figures_below,
     nearest_branch,
     read_branch,
     told_apart,
