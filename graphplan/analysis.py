@@ -46,7 +46,7 @@ from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
 from .misreadings import SheetsDrawn, misread
-from .motion import ILL_CONDITIONED_DEG, Motion, PositionWarning, solve, toggles_between
+from .motion import ILL_CONDITIONED_DEG, ILL_CONDITIONED_SINE, Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
@@ -414,7 +414,7 @@ def _block_near_pivot(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarn
     ill-conditioned positions never told it; at the pivot itself the lever
     has no direction (a singular position).
     """
-    limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
+    limit = ILL_CONDITIONED_SINE
     driver = mechanism.driver
     warnings = []
     for group in mechanism.groups:

@@ -41,6 +41,8 @@ from .scene import PointSpec, Scene
 # A group whose lines of action cross at less than this angle (degrees) has
 # a transmission angle near 0° or 180°: it is solved, and it is warned of.
 ILL_CONDITIONED_DEG = 1.0
+# The sine of that angle, below which a group's conditioning is told.
+ILL_CONDITIONED_SINE = math.sin(math.radians(ILL_CONDITIONED_DEG))
 
 _STILL = 0j
 
@@ -619,7 +621,7 @@ def _place(context: _Context, spec: PointSpec, mechanism: Mechanism, local: comp
 
 
 def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[PositionWarning, ...]:
-    limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
+    limit = ILL_CONDITIONED_SINE
     warnings = []
     for label, sine in conditioning.items():
         if np.min(sine) >= limit:  # the usual case, told by one reduction (a NaN goes on)
@@ -684,7 +686,7 @@ def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Referen
     and already warned of.
     """
     mechanism, values = analysed.mechanism, analysed.driver
-    limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
+    limit = ILL_CONDITIONED_SINE
     x = sweep.driver
     span = float(x[-1] - x[0])
     cyclic = mechanism.driver.cyclic if closed is None else closed
