@@ -141,7 +141,8 @@ def _one_two_five(step: float) -> bool:
 @pytest.mark.parametrize("scale", [0.0005, 0.001, 0.002, 0.004, 0.01, 0.05, 0.2])
 def test_every_je_axis_shows_two_numbers_a_letter_apart_at_round_values(scale):
     """Over a sweep of largest Je and μJ: at least two numbers, each centred on its tick and a letter's width from the
-    next; the ticks at equal round steps from nought, carried past the largest Je only as far as a second tick."""
+    next; the ticks at equal round steps from nought, carried past the largest Je only as far as the axis runs past
+    the curve, or to a second tick."""
     gap = text_width("0", dynamics.NUMBER)
     for largest in np.geomspace(0.01, 400.0, 97):
         largest = float(largest)
@@ -154,7 +155,10 @@ def test_every_je_axis_shows_two_numbers_a_letter_apart_at_round_values(scale):
             assert value == pytest.approx(k * step, rel=1e-9)
             assert at == pytest.approx(value / scale, rel=1e-9)
         beyond = [value for value, _, _ in ticks if value > largest * (1 + 1e-9)]
-        assert not beyond or len(ticks) == 2, (largest, scale, ticks)
+        within_run = all(value <= largest + dynamics.AXIS_RUN_MM * scale * (1 + 1e-9) for value in beyond)
+        assert within_run or len(ticks) == 2, (largest, scale, ticks)
+        # The axis is ticked as far as it runs past the curve: no round value is left bare there.
+        assert ticks[-1][0] + step > largest + dynamics.AXIS_RUN_MM * scale * (1 - 1e-9), (largest, scale, ticks)
         boxes = [box(*_centred(value, at)) for value, at in numbered]
         for a, b in itertools.pairwise(boxes):
             assert a.distance(b) >= gap - 1e-6, (largest, scale, numbered)
@@ -171,6 +175,15 @@ def test_an_axis_already_numbered_twice_or_more_keeps_its_ticks():
     ticks = dynamics._inertia_ticks(_fake_model(largest), SimpleNamespace(inertia=0.001))
     assert [round(value, 9) for value, _, _ in ticks] == [0.025, 0.05, 0.075]
     assert all(shown for _, _, shown in ticks)
+
+
+def test_a_je_past_its_last_tick_is_read_against_the_next_where_the_axis_runs_on_to_it():
+    """The Whitworth mechanism's Je peaks at 1.45 kg·m², drawn at μJ = 0.02 kg·m²/mm: 72.5 mm along an axis ticked
+    every 0.5 that runs 8 mm past the curve.  The tick at 1.5, 2.5 mm past the peak, is drawn and numbered, so the
+    peak stands between two numbers; the compressor's 0.091 at μJ = 0.001 keeps 0.075 last (0.1 is 9 mm out)."""
+    ticks = dynamics._inertia_ticks(_fake_model(1.45), SimpleNamespace(inertia=0.02))
+    assert [(round(value, 9), shown) for value, _, shown in ticks] == [(0.5, True), (1.0, True), (1.5, True)]
+    assert ticks[-1][1] == pytest.approx(75.0)
 
 
 def test_a_diagrams_numberings_are_its_axes_numbers_and_not_a_legend_of_figures():

@@ -190,7 +190,8 @@ def test_the_compressors_je_numbers_stand_a_letter_apart_each_at_its_ticks_value
     """At μJ = 0.002 kg·m²/mm a step of 0.025 is 12.5 mm.  Lettered at 2.8 mm, 0.05 beside 0.075 left under a letter
     between them, and the ticks went to the next step of 1-2-5 (0.05, 0.1); at the standard 2.5 mm of the axes'
     numbers they stand 3.5 mm apart, and every tick of 0.025 is numbered, each at its own tick (value / μJ from the
-    Je axis's origin).  (The coarser step where the numbers do crowd: test_dynamics_axis_numbering's sweep.)"""
+    Je axis's origin), on to 0.1, 4.5 mm past the largest Je (0.091), where the axis runs on 8 mm past the curve.
+    (The coarser step where the numbers do crowd: test_dynamics_axis_numbering's sweep.)"""
     svg = drawings["compressor", "en"]
     groups = {g.get("id"): g for g in ElementTree.parse(svg).getroot().iter(f"{SVG}g") if g.get("id")}
     turned = groups["inertia"]
@@ -201,12 +202,12 @@ def test_the_compressors_je_numbers_stand_a_letter_apart_each_at_its_ticks_value
                         and t.get("text-anchor") == "end")) + 1.0 + 1.2
     scale = 0.002
     values = [float(words) for words, _ in numbers]
-    assert values == [0.025, 0.05, 0.075]
+    assert values == [0.025, 0.05, 0.075, 0.1]
     for words, x in numbers:
         assert x - origin == pytest.approx(float(words) / scale, abs=0.01)
     ticks = [float(m.group(2)) - float(m.group(3)) for p in turned.iter(f"{SVG}path")
              if (m := re.fullmatch(r"M([\d.]+),([\d.]+) L\1,([\d.]+)", p.get("d")))]
-    assert sum(abs(length - 2.4) < 0.01 for length in ticks) == 3   # 0.025, 0.05 and 0.075 ticked, each numbered
+    assert sum(abs(length - 2.4) < 0.01 for length in ticks) == 4   # 0.025 to 0.1 ticked, each numbered
 
 
 @pytest.mark.parametrize(("kind", "locale"), DRAWINGS)

@@ -747,16 +747,19 @@ def _ink(number: Text):
 
 def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float, bool]]:
     """(Je, its abscissa in mm, whether it is numbered) of the ticks of Je: round steps, about four to the largest
-    Je; every one numbered where the numbers stand a letter's width apart (:data:`NUMBER_GAP_MM`) at that step,
-    else every second (third, ...) one, at the multiples of that many steps, as the kinematic diagrams number their
-    positions: 0.05 and 0.075 twelve millimetres apart at μJ = 0.002 ran together.
+    Je, on along the axis as far as it runs past the curve (:data:`AXIS_RUN_MM`): the Whitworth mechanism's Je of
+    1.45 kg·m² ran 22 mm past its last tick, 1, under an axis drawn bare to 2.3.  Every one numbered where the
+    numbers stand a letter's width apart (:data:`NUMBER_GAP_MM`) at that step, else every second (third, ...) one,
+    at the multiples of that many steps, as the kinematic diagrams number their positions: 0.05 and 0.075 twelve
+    millimetres apart at μJ = 0.002 ran together.
 
     Where that leaves fewer than two numbers, the ticks go to the coarsest step of the 1-2-5 series that needs no
     thinning, every one numbered, carried past the largest Je to a second tick where the curve stops short of it: one
     number alone (0.05 between bare ticks at 0.025 and 0.075, the compressor's) gives no scale to read the axis by."""
     largest = float(np.max(model.inertia))
     step = nice_step(largest / 4)
-    values = [float(value) for value in np.arange(step, largest + step * 1e-9, step)]
+    axis_run = largest + AXIS_RUN_MM * scales.inertia
+    values = [float(value) for value in np.arange(step, axis_run + step * 1e-9, step)]
     every = _numbered_every(values, step, scales.inertia)
     ticks = [(value, value / scales.inertia, round(value / step) % every == 0) for value in values]
     if sum(numbered for _, _, numbered in ticks) >= 2:
