@@ -53,7 +53,7 @@ from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import OTHER_SENSE, LoadSpec, Scene
 from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
-from .unit_slips import inertia_too_large, masses_in_grams, speed_in_rpm
+from .unit_slips import centres_as_shares, inertia_too_large, masses_in_grams, speed_in_rpm
 from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
@@ -231,7 +231,8 @@ def analyse(scene: Scene) -> Analysis:
     warnings += misread(mechanism, (*plans, *every))
     in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism)
                             + masses_in_grams(mechanism, motion)
-                            + inertia_too_large(mechanism, motion) + motion.warnings + stepped_over
+                            + inertia_too_large(mechanism, motion) + centres_as_shares(mechanism, motion)
+                            + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
                             + _working_stroke_quicker(mechanism, positions) + _block_near_pivot(mechanism, paths)
@@ -272,8 +273,8 @@ def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
-                                 "inertia-too-large", "resisting-turns-round", "along-moving-point",
-                                 "working-stroke-quicker", "block-near-pivot"})
+                                 "inertia-too-large", "centre-as-share", "resisting-turns-round",
+                                 "along-moving-point", "working-stroke-quicker", "block-near-pivot"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

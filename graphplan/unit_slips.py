@@ -158,6 +158,36 @@ def inertia_too_large(mechanism: Mechanism, motion: Motion) -> tuple[PositionWar
                                                                       "kg·m²"),)
 
 
+def centres_as_shares(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
+    """A ``centre-as-share`` warning, at the first position, naming each link's centre of mass placed ``at`` a share
+    of its line (0 < ``at`` ≤ 1) that puts it past the point it is measured toward and out beyond the link's other
+    points, stretching the link's span: a share of the line typed for metres, as ``at = 0.5`` for the middle of a
+    0.45 m rod puts its centre 0.05 m past its end.  A link's mass lies about its joints; a counterweight beyond them
+    (a crank's, at a negative ``at``) or a centre within the link's reach is not told."""
+    scene = mechanism.scene
+    named = {point.name: point for point in scene.points}
+    told = []
+    for number, link in sorted(scene.links.items()):
+        spec = named.get(link.centre) if link.mass > 0 and link.centre else None
+        if spec is None or spec.link != number or not 0.0 < spec.at <= 1.0:
+            continue
+        line = abs(complex(*motion.point(spec.toward).r[0]) - complex(*motion.point(spec.start).r[0]))
+        body = motion.span(number, leaving_out=(spec.name,))
+        stretched = motion.span(number)
+        if not spec.at > line or body is None or stretched is None or not stretched[0] > body[0] * (1 + 1e-9):
+            continue
+        past = spec.at - line
+        segment = f"{spec.start}{spec.toward}"
+        told.append(f"{spec.where}.at = {spec.at:g} m puts link {number}'s centre of mass {spec.name} "
+                    f"{written(past, 3)} m past {spec.toward}, beyond the link's other points (its span grows from "
+                    f"{written(body[0], 3)} m, {body[1]}, to {written(stretched[0], 3)} m): a share of {segment} "
+                    f"typed for metres? at is metres from {spec.start}; {spec.at:g} of {segment} "
+                    f"({written(line, 4)} m) is {spec.where}.at = {written(spec.at * line, 4)}")
+    if not told:
+        return ()
+    return (PositionWarning(0, "centre-as-share", "; ".join(told)),)
+
+
 def _crank_depth(mass: float, inertia: float) -> float | None:
     """How far along its axis a steel body of ``mass`` (kg) reaches at least, whose moment of inertia about its centre
     is ``inertia`` (kg·m²): m²/(2π·ρ·J), m; None where no inertia is given."""
