@@ -102,6 +102,8 @@ class Panel:
     # have it: the same title repeated read as another drawing.  Its ways (on one line, broken), the first a sheet
     # holds taken; none given: ``heading`` on every sheet.
     continued_heading: tuple[tuple[Layer, ...], ...] = ()
+    # ``heading`` broken onto lines at its last phrase, for a sheet too narrow for it on one; none given: never broken.
+    broken_heading: tuple[Layer, ...] = ()
     # The scales a force sheet's part's heading may name, each with the start of the names of the drawings drawn at
     # it (:attr:`force_rows.Heading.scales`): drawn naming those of every drawing that may stand under it, once
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
@@ -800,24 +802,27 @@ _MOST_HEADED_ORDERS = 6
 
 
 def _headed(panel: Panel, pages: list[Page], sheet: str, form: str, turns: Sequence[bool]) -> list[Page] | None:
-    """``pages`` of ``panel``'s parts laid out again under its heading (the sheets after the first under its
-    continued heading, the first of its ways that the sheet holds), each page's drawings that much lower, on no
-    more pages; None where the parts need more under a heading."""
+    """``pages`` of ``panel``'s parts laid out again under its heading (the sheets after the first headed one under
+    its continued heading, the first of its ways that the sheet holds), each page's drawings that much lower, on no
+    more pages; a page whose drawings leave no room for a heading stays as it was, bare.  None where no page takes
+    the heading.  All or none, the slider-crank's plan sheets on an A4 (the mechanism alone, then both plans, as
+    tall as the sheet) stood bare, the first of them with half the sheet empty."""
     # As far over the drawings as the whole sets its heading over its fields.
     parts_top = bounds([layer for layer in panel.layers if layer not in panel.heading])[3]
     gap = bounds(panel.heading)[1] - parts_top
     headed: list[Page] = []
-    for k, page in enumerate(pages):
-        ways = panel.continued_heading if k and panel.continued_heading else (panel.heading,)
+    any_headed = False
+    for page in pages:
+        ways = (panel.continued_heading if any_headed and panel.continued_heading
+                else tuple(way for way in (panel.heading, panel.broken_heading) if way))
         # Lettering, at no length scale: a sheet of plans under it leaves its scale box empty.
         fresh = next((found for way in ways
                       for found in [_under_heading(Panel(f"{panel.name}-heading", way, to_scale=False), page, gap,
                                                    sheet, form)]
                       if found is not None), None)
-        if fresh is None:
-            return None
-        headed.append(fresh)
-    return headed
+        any_headed = any_headed or fresh is not None
+        headed.append(page if fresh is None else fresh)
+    return headed if any_headed else None
 
 
 def _under_heading(heading: Panel, page: Page, gap: float, sheet: str, form: str) -> Page | None:
