@@ -471,22 +471,40 @@ def _turns_round(mechanism: Mechanism, sweep: Motion, working: Working) -> int:
     return sign * round(turned / (2.0 * math.pi))
 
 
-def _turning_steps(sweep: Motion, working: Working) -> np.ndarray:
-    """The angle (rad) the working link turns through at each step of ``sweep``, within ±π: a half-degree step of
-    the crank turns it through less than half a turn, away from a toggle."""
-    angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
+def _turning_steps(sweep: Motion, working: Working | int) -> np.ndarray:
+    """The angle (rad) the working link (or link ``working``) turns through at each step of ``sweep``, within ±π: a
+    half-degree step of the crank turns it through less than half a turn, away from a toggle."""
+    link = working if isinstance(working, int) else working.link
+    angle = np.broadcast_to(np.asarray(sweep.links[link].angle, dtype=float), sweep.driver.shape)
     return np.angle(np.exp(1j * np.diff(angle)))
 
 
 def _half_turned(mechanism: Mechanism, sweep: Motion, working: Working) -> str:
-    """Why a turning link never reverses, where its angle flips over by half a turn between two neighbouring
-    steps of the sweep: it passes a singular position each cycle, and its motion there has no extreme to find."""
+    """Why the working link never reverses, where its angle, or that of a link it is driven through, flips over by
+    half a turn between two neighbouring steps of the sweep: the mechanism passes a singular position each cycle,
+    and the motion after it has no extreme to find.  A Whitworth slider driven off a lever whose block passes over
+    its pivot was refused without a cause: the flip is the lever's, not the slider's."""
     # A half-degree step turns a link through far less than a quarter turn, away from a singular position.
-    if working.link in mechanism.translating or not np.any(np.abs(_turning_steps(sweep, working)) > 0.75 * math.pi):
+    flipped = [number for number in sorted(sweep.links) if number not in mechanism.translating
+               and np.any(np.abs(_turning_steps(sweep, number)) > 0.75 * math.pi)]
+    # A block turns with the lever it slides in: the lever is the link to name.
+    carried = {slide.slider for slide in sweep.slides if slide.guide in flipped}
+    named = [number for number in flipped if number not in carried]
+    if not named:
         return ""
-    return (": its angle flips over by half a turn once a cycle, at a singular position where nothing fixes its "
-            "direction (the block of a slotted lever passing over the lever's pivot, where the crank is as long "
-            "as the distance between the pivots); make those lengths differ")
+    if working.link in flipped:
+        whose = "its angle flips"
+    elif len(named) == 1:
+        whose = f"the angle of link {named[0]}, which drives it, flips"
+    else:
+        whose = f"the angles of links {', '.join(map(str, named[:-1]))} and {named[-1]}, which drive it, flip"
+    steps = _turning_steps(sweep, working.link if working.link in flipped else named[0])
+    at = int(np.flatnonzero(np.abs(steps) > 0.75 * math.pi)[0])
+    crank = np.asarray(sweep.driver, dtype=float)
+    near = math.degrees((crank[at] + crank[at + 1]) / 2.0) % 360.0
+    return (f": {whose} over by half a turn once a cycle (near φ = {near:.0f}°), at a singular position where "
+            "nothing fixes that direction (the block of a slotted lever passing over the lever's pivot, where the "
+            "crank is as long as the distance between the pivots); make those lengths differ")
 
 
 def _refuse_needing_extremes(mechanism: Mechanism) -> None:

@@ -216,9 +216,60 @@ def test_a_slotted_lever_whose_crank_spans_the_pivots_is_told_why_its_lever_has_
         graphplan.solve(scene, driver=[math.radians(270.0)])
     _, error = first_error(text)
     assert error.where == "positions.working"
-    assert "never reverses its motion" in str(error) and "flips over by half a turn once a cycle" in str(error)
+    assert "never reverses its motion" in str(error)
+    assert "its angle flips over by half a turn once a cycle (near φ = 270°)" in str(error)
     # A shorter crank swings the lever, which then has its extremes.
     assert graphplan.solve(graphplan.load_text(changed(text, "length  = 0.30 ", "length  = 0.12 "))) is not None
+
+
+WHITWORTH_SPANNING = """\
+[scene]
+title = "Whitworth quick-return mechanism, its crank as long as the distance between its pivots"
+[frame]
+link = 1
+points = { C = [0.0, 0.0], O = [0.0, 0.20] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.20
+omega = 10.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = 0.0
+[points]
+D = { link = 4, from = "C", toward = "A", at = -0.15 }
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["D", "E"]
+length = 0.45
+assembly = "forward"
+guide = { through = [0.0, 0.0], angle = 0.0 }
+[positions]
+count = 12
+start = "extreme"
+working = { link = 6, sense = "forward" }
+"""
+
+
+def test_a_slider_driven_off_a_lever_that_flips_over_is_told_the_lever_flips() -> None:
+    """A Whitworth slider E driven through DE off the lever CA, the crank OA as long as OC: A passes over C at
+    φ = 270° (C straight below O), where the lever's direction flips by half a turn, so the slider never reverses.
+    The refusal looked only at the slider, which does not turn, and named no cause; it names the lever (not the block
+    3 that turns with it) and the crank angle of the flip."""
+    scene = graphplan.load_text(WHITWORTH_SPANNING)
+    assert abs(scene.frame_points["O"] - scene.frame_points["C"]) == pytest.approx(scene.driver.length)
+    _, error = first_error(WHITWORTH_SPANNING)
+    assert error.where == "positions.working"
+    assert str(error).startswith("positions.working: link 6 never reverses its motion, so it has no extreme position: "
+                                 "the angle of link 4, which drives it, flips over by half a turn once a cycle "
+                                 "(near φ = 270°), at a singular position")
+    # With OC shorter than the crank the lever turns round smoothly, and the slider has its two extremes.
+    assert graphplan.solve(graphplan.load_text(changed(WHITWORTH_SPANNING, "O = [0.0, 0.20]", "O = [0.0, 0.10]")))
 
 
 @pytest.mark.parametrize("driver", [[1j], np.array([1j]), np.array([1 + 0j, 2.0])], ids=["list", "array", "real-as-complex"])
