@@ -401,5 +401,5 @@ def test_an_rpr_slide_out_of_reach_names_its_offset_once(tmp_path, capsys) -> No
         assert told.count("groups[0].offset") == 2, told
         assert told.rstrip().endswith("; or, if link 2 is meant to turn round, check the lengths: over the turn A "
                                       "comes as near as 0.18 m to C (at φ = 270°), inside the slide's 0.25 m, so the "
-                                      "crank turns round only with groups[0].offset of a size under 0.1799 m"), told
+                                      "crank turns round only with groups[0].offset of a size up to 0.1799 m"), told
     assert not (tmp_path / "out").exists()

@@ -114,12 +114,12 @@ def test_an_rpr_slide_farther_from_c_than_a_ever_comes_names_the_offset_and_a_s_
     farthest = 0.15 + OC
     tail = message[len(head):]
     found = re.fullmatch(r"the mechanism assembles at no angle of link 2: A comes no farther than ([\d.]+) m from C "
-                         r"\(at φ = ([\d.]+)°\), short of the slide's 0\.5 m: give groups\[0\]\.offset a size under "
+                         r"\(at φ = ([\d.]+)°\), short of the slide's 0\.5 m: give groups\[0\]\.offset a size up to "
                          r"([\d.]+) m", tail)
     assert found, tail
     assert float(found[1]) == pytest.approx(farthest, abs=1e-6)
     assert float(found[2]) == pytest.approx(math.degrees(math.atan2(0.04, -0.06)), abs=0.01)
-    # The size advised is one the block reaches, to four figures: rounded down, not up.
+    # The size advised is one the block reaches, to four figures: below the farthest, not up to it.
     assert farthest - 1e-4 <= float(found[3]) < farthest
     assert "check the lengths" not in message
 

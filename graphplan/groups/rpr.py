@@ -19,7 +19,6 @@ and :meth:`RPR.construct_acceleration`).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -31,7 +30,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
-from ..rounding import digit_unit, figures_below
+from ..rounding import figures_below
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, refuse_branch
 from .sliding import coriolis, coriolis_letter
 
@@ -75,12 +74,11 @@ class RPR(Group):
         reach = float(gaps[farthest])
         if reach > abs(self.offset) or reach == 0.0:
             return None
-        # To four figures, rounded down, so that an offset of the size written reaches at the farthest.
-        quantum = digit_unit(reach, 4)
-        under = math.floor(reach / quantum) * quantum
+        # To four figures below the reach, as turning_round and the other groups' bounds are offered: an offset of
+        # the size written reaches at the farthest, not only touches there.
         return (f"{a_name} comes no farther than {reach:.6g} m from {c_name} "
                 f"(at {before.mechanism.driver.describe(float(before.driver[farthest]))}), short of the slide's "
-                f"{abs(self.offset):.6g} m: give {self.where}.offset a size under {under:.6g} m")
+                f"{abs(self.offset):.6g} m: give {self.where}.offset a size up to {figures_below(reach):.6g} m")
 
     def turning_round(self, before: Motion) -> str | None:
         """A's nearest to C over the turn ``before`` the group, where that falls inside the slide's offset: the
@@ -93,7 +91,7 @@ class RPR(Group):
             return None
         place = before.mechanism.driver.describe(float(before.driver[nearest]))
         return (f"over the turn {a_name} comes as near as {least:.6g} m to {c_name} (at {place}), inside the slide's "
-                f"{abs(self.offset):.6g} m, so the crank turns round only with {self.where}.offset of a size under "
+                f"{abs(self.offset):.6g} m, so the crank turns round only with {self.where}.offset of a size up to "
                 f"{figures_below(least):.6g} m")
 
     @property
