@@ -412,6 +412,26 @@ def test_no_position_number_on_the_balancing_plot_runs_into_its_frame(path):
         assert not _tick_labels_say_their_values(figure)
 
 
+@pytest.mark.parametrize("path", FIXTURES, ids=[path.stem for path in FIXTURES])
+def test_a_cranks_balancing_plot_is_ticked_every_30_degrees_as_its_positions_stand(path):
+    """matplotlib's own ticks, 0, 50, 100, …, left a turn's positions (every 30°) between ticks: the crank's angle is
+    ticked every 30° from the first position to the last sample of the turn, a swing's to its end."""
+    import matplotlib
+
+    from graphplan.report.figures import _balancing_figure
+    from graphplan.report.plot_style import settings
+
+    analysis = analyse(graphplan.load(str(path)))
+    with matplotlib.rc_context(settings()):
+        figure = _balancing_figure(analysis)
+        ticks = figure.axes[0].get_xticks()
+    along = np.degrees(np.abs(analysis.paths.driver - analysis.positions.values[0]))
+    if analysis.mechanism.driver.kind != "crank" or along.max() < 90.0:
+        return   # a slider's travel, or a swing too short for three steps (the double rocker's 45°): matplotlib's
+    assert ticks[0] == 0.0 and np.allclose(np.diff(ticks), 30.0)
+    assert ticks[-1] <= along.max() + 1e-9 < ticks[-1] + 30.0
+
+
 def _on_squares(figure) -> list[str]:
     """The position numbers of the balancing plot drawn over the square that rings a force polygon's value."""
     from matplotlib.text import Annotation
