@@ -5,6 +5,7 @@ drawing took its place against the frame's margin."""
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import re
 
 import pytest
@@ -52,27 +53,36 @@ def test_every_plan_sheet_has_its_heading_over_its_drawings_on_a2(name, locale):
 SVG = "{http://www.w3.org/2000/svg}"
 
 
-def _sheet_headings(tmp_path, kind: str, sheet: str) -> dict[int, list[tuple[str, float, float]]]:
-    """Each plan position's heading as the run draws it on its ``sheet`` course sheets: its lines' (text, x, y)."""
+def _sheet_headings(tmp_path, kind: str, sheet: str, locale: str = "en"
+                    ) -> dict[int, list[list[tuple[str, float, float]]]]:
+    """Each plan position's headings as the run draws them on its ``sheet`` course sheets, sheet by sheet: each
+    heading's lines' (text, x, y)."""
     from xml.etree import ElementTree
 
     from graphplan.cli import main
 
     scene = tmp_path / f"{kind}.toml"
-    scene.write_text(starter(kind, "en"), encoding="utf-8")
+    scene.write_text(starter(kind, locale), encoding="utf-8")
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out), "--only", "sheets", "--sheet", sheet]) == 0
-    found: dict[int, list[tuple[str, float, float]]] = {}
-    for path in sorted(out.glob("sheet_*.svg")):
+    found: dict[int, list[list[tuple[str, float, float]]]] = {}
+    for path in sorted(out.glob("sheet_*.svg"), key=lambda path: int(path.stem.split("_")[1])):
         groups = {g.get("id"): g for g in ElementTree.parse(path).getroot().iter(f"{SVG}g") if g.get("id")}
         for name, group in groups.items():
             if (number := re.fullmatch(r"plan-(\d+)-heading-sheet-title", name)) is None:
                 continue
             # Over the position's own drawings, on a sheet that holds at least one of them.
             assert any(other.startswith(f"plan-{number.group(1)}-") and other != name for other in groups), path
-            found[int(number.group(1))] = [("".join(t.itertext()), float(t.get("x")), float(t.get("y")))
-                                           for t in group.iter(f"{SVG}text")]
+            found.setdefault(int(number.group(1)), []).append(
+                [("".join(t.itertext()), float(t.get("x")), float(t.get("y"))) for t in group.iter(f"{SVG}text")])
     return found
+
+
+def _read(lines: list[tuple[str, float, float]], locale: str = "en") -> str:
+    """A heading's lines read as one, flush left and one under another."""
+    assert all(x == pytest.approx(lines[0][1]) for _, x, _ in lines)
+    assert all(b[2] > a[2] for a, b in itertools.pairwise(lines))
+    return ("" if locale == "zh" else " ").join(text for text, _, _ in lines)
 
 
 def test_plan_sheets_too_tall_for_one_a4_keep_their_heading_where_a_page_has_room(tmp_path):
@@ -80,20 +90,38 @@ def test_plan_sheets_too_tall_for_one_a4_keep_their_heading_where_a_page_has_roo
     mechanism with the velocity plan, then the acceleration plan).  A page whose drawings fill the sheet's height
     leaves no room for the heading; the packing took the heading all or nothing, so no plan sheet had one, the
     mechanism of position 2 alone on half an empty sheet under none.  Now each heading stands over the first of its
-    pages that holds it."""
+    pages that holds it, and "continued" over those after it that have room."""
     headings = _sheet_headings(tmp_path, "slider-crank", "A4")
     positions = [plan.number for plan in analyse(graphplan.load_text(starter("slider-crank", "en"))).plans]
     assert sorted(headings) == sorted(positions)
-    for number, lines in headings.items():
-        assert " ".join(text for text, _, _ in lines) == HEADINGS["en"].format(number=number)
+    for number, pages in headings.items():
+        title = HEADINGS["en"].format(number=number)
+        assert [_read(lines) for lines in pages] == [title] + [f"{title} (continued)"] * (len(pages) - 1)
 
 
-def test_a_heading_wider_than_the_sheet_is_broken_at_its_phrase(tmp_path):
-    """On an A4 across, 251 mm clear between the frame's margins, "Velocity and acceleration plans, position 11",
-    lettered 7 mm high and bold, is 251.5 mm wide (position 5's fitted): broken after its comma, its two lines flush
-    left, one over the other, it stands over the acceleration plan of position 11, which leaves room for it."""
+def test_a_heading_wider_than_the_sheet_is_broken_at_its_phrases(tmp_path):
+    """On an A4, "Velocity and acceleration plans, position 11", lettered 7 mm high and bold, is 251.5 mm wide: wider
+    than an A4 across holds between its margins (251 mm; position 5's fitted), and even broken after its comma
+    (184 mm) than an upright one.  Each of the crank-rocker's plan pages (each drawing as tall as an upright A4) had
+    none: now the heading is broken at its phrases to the room the page leaves, its lines flush left."""
     headings = _sheet_headings(tmp_path, "crank-rocker", "A4")
-    lines = headings[11]
-    assert [text for text, _, _ in lines] == ["Velocity and acceleration plans,", "position 11"]
-    (_, x0, y0), (_, x1, y1) = lines
-    assert x0 == pytest.approx(x1) and y1 > y0
+    for number in (5, 11):
+        first, *after = headings[number]
+        title = HEADINGS["en"].format(number=number)
+        assert len(first) >= 2 and _read(first) == title
+        assert all(_read(lines) == f"{title} (continued)" for lines in after)
+
+
+def test_an_eskd_a4s_heading_stands_under_its_corner_box(tmp_path):
+    """An upright ESKD A4 has the box of the document's designation in its top left corner (ГОСТ 2.104's графа 26,
+    70 × 14 mm, its foot 19 mm from the sheet's top).  The Russian heading, broken to fit beside the drawings' left
+    edge, ran into it there and was too wide to stand right of it: no Russian plan sheet on A4 had its heading.  It
+    stands under the box now, every line of it."""
+    headings = _sheet_headings(tmp_path, "slider-crank", "A4", "ru")
+    positions = [plan.number for plan in analyse(graphplan.load_text(starter("slider-crank", "ru"))).plans]
+    assert sorted(headings) == sorted(positions)
+    for number, pages in headings.items():
+        title = HEADINGS["ru"].format(number=number)
+        assert _read(pages[0], "ru") == title
+        # Each line's letters (7 mm capitals over the baseline) below the box's foot.
+        assert all(y - 7.0 > 19.0 for lines in pages for _, _, y in lines)

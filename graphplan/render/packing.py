@@ -102,8 +102,9 @@ class Panel:
     # have it: the same title repeated read as another drawing.  Its ways (on one line, broken), the first a sheet
     # holds taken; none given: ``heading`` on every sheet.
     continued_heading: tuple[tuple[Layer, ...], ...] = ()
-    # ``heading`` broken onto lines at its last phrase, for a sheet too narrow for it on one; none given: never broken.
-    broken_heading: tuple[Layer, ...] = ()
+    # ``heading`` broken onto lines, for a sheet too narrow for it on one: its ways, each narrower than the one before,
+    # the first a sheet holds taken; none given: never broken.
+    broken_heading: tuple[tuple[Layer, ...], ...] = ()
     # The scales a force sheet's part's heading may name, each with the start of the names of the drawings drawn at
     # it (:attr:`force_rows.Heading.scales`): drawn naming those of every drawing that may stand under it, once
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
@@ -813,8 +814,8 @@ def _headed(panel: Panel, pages: list[Page], sheet: str, form: str, turns: Seque
     headed: list[Page] = []
     any_headed = False
     for page in pages:
-        ways = (panel.continued_heading if any_headed and panel.continued_heading
-                else tuple(way for way in (panel.heading, panel.broken_heading) if way))
+        ways = panel.continued_heading if any_headed and panel.continued_heading else (panel.heading,
+                                                                                       *panel.broken_heading)
         # Lettering, at no length scale: a sheet of plans under it leaves its scale box empty.
         fresh = next((found for way in ways
                       for found in [_under_heading(Panel(f"{panel.name}-heading", way, to_scale=False), page, gap,
@@ -830,28 +831,40 @@ def _under_heading(heading: Panel, page: Page, gap: float, sheet: str, form: str
     not hold them so."""
     drawings = [drawing for drawing, _, _ in page.placed]
     fresh = _empty_page(sheet, form, _upright(page))
-    lowered = replace(fresh, area=(*fresh.area[:3], fresh.area[3] - height(heading) - gap))
-    if lowered.area[3] <= lowered.area[1] or not all(lowered.place(drawing) for drawing in drawings):
-        # A drawing as tall as the sheet: the heading takes its corner first, the drawings the room left, in
-        # the order they stood in or, where that leaves none, in another.
-        for order in itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS):
-            cornered = _empty_page(sheet, form, _upright(page))
-            if cornered.place(heading) and all(cornered.place(drawing) for drawing in order):
-                return cornered
-        return None
-    rects = [rect for _, rect, _ in lowered.placed]
-    left, top = min(rect[0] for rect in rects), max(rect[3] for rect in rects)
-    # Over the drawings' left edge, or right of a corner box it would run into.
-    spots = [(x, top + gap, x + width(heading), top + gap + height(heading))
-             for x in (left, *([lowered.corner[2] + PADDING_MM] if lowered.corner else []))]
-    rect = next((spot for spot in spots if spot[2] <= fresh.area[2] + 1e-6
-                 and not any(overlap(spot, box) for box in lowered.obstacles())), None)
-    if rect is None:
-        return None
-    x0, y0, _, _ = heading.extent
-    lowered.placed.append((heading, rect, (rect[0] - x0, rect[1] - y0)))
-    lowered.area = fresh.area
-    return lowered
+    # From the top of the area, or, where the heading runs into the corner box there and is too wide to stand right
+    # of it, from under the box: the Russian slider-crank's plan headings on an upright ESKD A4.
+    corner = _grown(fresh.corner, PADDING_MM) if fresh.corner is not None else None
+    ceilings = [fresh.area[3], *([corner[1] - 1e-6] if corner is not None and corner[1] < fresh.area[3] else [])]
+    for k, ceiling in enumerate(ceilings):
+        # A page of its own each time: a page's copy shares the list of what is placed on it.
+        lowered = replace(_empty_page(sheet, form, _upright(page)),
+                          area=(*fresh.area[:3], ceiling - height(heading) - gap))
+        if lowered.area[3] <= lowered.area[1] or not all(lowered.place(drawing) for drawing in drawings):
+            # Lower down they fit no better.
+            return _heading_cornered(heading, drawings, page, sheet, form) if k == 0 else None
+        rects = [rect for _, rect, _ in lowered.placed]
+        left, top = min(rect[0] for rect in rects), max(rect[3] for rect in rects)
+        # Over the drawings' left edge, or right of a corner box it would run into.
+        spots = [(x, top + gap, x + width(heading), top + gap + height(heading))
+                 for x in (left, *([lowered.corner[2] + PADDING_MM] if lowered.corner else []))]
+        rect = next((spot for spot in spots if spot[2] <= fresh.area[2] + 1e-6
+                     and not any(overlap(spot, box) for box in lowered.obstacles())), None)
+        if rect is not None:
+            x0, y0, _, _ = heading.extent
+            lowered.placed.append((heading, rect, (rect[0] - x0, rect[1] - y0)))
+            lowered.area = fresh.area
+            return lowered
+    return None
+
+
+def _heading_cornered(heading: Panel, drawings: Sequence[Panel], page: Page, sheet: str, form: str) -> Page | None:
+    """A drawing as tall as the sheet: the heading takes its corner first, the drawings the room left, in the order
+    they stood in or, where that leaves none, in another; None where no order fits."""
+    for order in itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS):
+        cornered = _empty_page(sheet, form, _upright(page))
+        if cornered.place(heading) and all(cornered.place(drawing) for drawing in order):
+            return cornered
+    return None
 
 
 def area_allows(panels: Sequence[Panel], count: int, sheet: str, form: str) -> bool:

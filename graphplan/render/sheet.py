@@ -142,8 +142,11 @@ _FIELD_GIVEN_FOR_A_SHEET = 0.8
 _LARGER_SCALES_TRIED = 12
 # A "none" page has this margin round its drawing, as the drawings before sheets had.
 UNFRAMED_MARGIN_MM = 8.0
-# How much narrower than the title a broken title must be, so that it breaks at its last phrase or word where one
-# line is too wide for a sheet.
+# A title too wide for a sheet is broken to narrower than these shares of its width, in turn: at its last phrase
+# (the English and Russian plan sheet's titles after their comma), then into three lines or so (the Russian title's
+# first line, 181 mm, was still too wide for an upright A4 beside its ESKD corner box).
+HEADING_SHARES = (1.0, 0.6)
+# How much narrower than that share a broken title must be, so that the whole title is broken at a phrase or a word.
 NARROWER_BY_MM = 0.5
 
 _EDGE = Stroke(0.2, "#555555")
@@ -223,22 +226,25 @@ def _headed(panel: Panel, continued: str) -> Panel:
     """A plan sheet as a panel with its title as the heading its parts stand under on sheets of their own, the
     sheets after the first under the title "continued" (``continued``, a format of ``{title}``)."""
     heading = tuple(layer for layer in panel.layers if layer.name == plan_layout.TITLE_LAYER)
-    ways = tuple(tuple(_continued(layer, continued, broken) for layer in heading) for broken in (False, True))
-    broken_heading = tuple(_continued(layer, "{title}", True, narrower=True) for layer in heading)
+    ways = tuple(tuple(_continued(layer, continued, broken, share) for layer in heading)
+                 for broken, share in ((False, None), (True, None), *((True, share) for share in HEADING_SHARES[1:])))
+    broken = (tuple(_continued(layer, "{title}", True, share) for layer in heading) for share in HEADING_SHARES)
     return replace(panel, heading=heading, continued_heading=tuple(dict.fromkeys(ways)),
-                   broken_heading=broken_heading if broken_heading != heading else (),
+                   broken_heading=tuple(way for way in dict.fromkeys(broken) if way != heading),
                    alternatives=tuple(_headed(way, continued) for way in panel.alternatives))
 
 
-def _continued(title: Layer, continued: str, broken: bool, narrower: bool = False) -> Layer:
+def _continued(title: Layer, continued: str, broken: bool, share: float | None = None) -> Layer:
     """``title``'s layer with its title "continued" (``continued``, a format of ``{title}``), on one line or
-    ``broken`` to no wider than the title (which a sheet holds), or with ``narrower`` at its last break that leaves
-    it narrower than the title (the title itself too wide for a sheet: an A4 across held "Velocity and acceleration
-    plans, position 5" and not, by half a millimetre, position 11's), its last line where the title stands and the
-    others above."""
+    ``broken`` to no wider than the title (which a sheet holds), or, given a ``share``, to narrower than that share
+    of the title (the title itself too wide for a sheet: an A4 across held "Velocity and acceleration plans,
+    position 5" and not, by half a millimetre, position 11's), its last line where the title stands and the others
+    above."""
     first = next(item for item in title.items if isinstance(item, Text))
     line = continued.format(title=first.text)
-    room = text_width(first.text, first.size, first.weight) - (NARROWER_BY_MM if narrower else 0.0)
+    room = text_width(first.text, first.size, first.weight)
+    if share is not None:
+        room = share * room - NARROWER_BY_MM
     lines = fitted(line, room, first.size, first.weight) if broken else [line]
     return Layer(title.name, plan_layout.title_texts(lines, first.size, first.at))
 
