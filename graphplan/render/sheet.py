@@ -228,9 +228,9 @@ def _headed(panel: Panel, continued: str) -> Panel:
     heading = tuple(layer for layer in panel.layers if layer.name == plan_layout.TITLE_LAYER)
     ways = tuple(tuple(_continued(layer, continued, broken, share) for layer in heading)
                  for broken, share in ((False, None), (True, None), *((True, share) for share in HEADING_SHARES[1:])))
-    broken = (tuple(_continued(layer, "{title}", True, share) for layer in heading) for share in HEADING_SHARES)
+    narrower = (tuple(_continued(layer, "{title}", True, share) for layer in heading) for share in HEADING_SHARES)
     return replace(panel, heading=heading, continued_heading=tuple(dict.fromkeys(ways)),
-                   broken_heading=tuple(way for way in dict.fromkeys(broken) if way != heading),
+                   broken_heading=tuple(way for way in dict.fromkeys(narrower) if way != heading),
                    alternatives=tuple(_headed(way, continued) for way in panel.alternatives))
 
 
