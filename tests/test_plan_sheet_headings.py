@@ -7,6 +7,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import re
+from pathlib import Path
 
 import pytest
 
@@ -15,6 +16,8 @@ from graphplan.analysis import analyse
 from graphplan.render.primitives import Text, text_extent
 from graphplan.render.sheet import course_sheets
 from graphplan.starters import starter
+
+ROOT = Path(__file__).resolve().parent.parent
 
 # The heading of a plan sheet, as each locale words it.
 HEADINGS = {"en": "Velocity and acceleration plans, position {number}",
@@ -61,10 +64,13 @@ def _sheet_headings(tmp_path, kind: str, sheet: str, locale: str = "en"
 
     from graphplan.cli import main
 
-    scene = tmp_path / f"{kind}.toml"
-    scene.write_text(starter(kind, locale), encoding="utf-8")
+    if kind.endswith(".toml"):   # a fixture, drawn in ``locale``
+        scene, language = Path(kind), ["--locale", locale]
+    else:
+        scene, language = tmp_path / f"{kind}.toml", []
+        scene.write_text(starter(kind, locale), encoding="utf-8")
     out = tmp_path / "out"
-    assert main(["run", str(scene), "--out", str(out), "--only", "sheets", "--sheet", sheet]) == 0
+    assert main(["run", str(scene), "--out", str(out), "--only", "sheets", "--sheet", sheet, *language]) == 0
     found: dict[int, list[list[tuple[str, float, float]]]] = {}
     for path in sorted(out.glob("sheet_*.svg"), key=lambda path: int(path.stem.split("_")[1])):
         groups = {g.get("id"): g for g in ElementTree.parse(path).getroot().iter(f"{SVG}g") if g.get("id")}
@@ -125,3 +131,27 @@ def test_an_eskd_a4s_heading_stands_under_its_corner_box(tmp_path):
         assert _read(pages[0], "ru") == title
         # Each line's letters (7 mm capitals over the baseline) below the box's foot.
         assert all(y - 7.0 > 19.0 for lines in pages for _, _, y in lines)
+
+
+def test_a_heading_stands_over_the_plans_beside_a_mechanism_as_tall_as_the_sheet(tmp_path):
+    """The scotch yoke's plunger is drawn down the whole height of a Russian A3, under its ESKD corner box: no
+    heading stood over it nor over the page's drawings lowered, and the plan sheet of position 4 had none, with room
+    over its velocity and acceleration plans right of the mechanism.  The heading stands there now, the highest
+    thing on the sheet, clear of the mechanism's column."""
+    from xml.etree import ElementTree
+
+    headings = _sheet_headings(tmp_path, str(ROOT / "fixtures" / "scotch_yoke.toml"), "A3", "ru")
+    assert _read(headings[4][0], "ru") == HEADINGS["ru"].format(number=4)
+    for path in (tmp_path / "out").glob("sheet_*.svg"):
+        groups = {g.get("id"): g for g in ElementTree.parse(path).getroot().iter(f"{SVG}g") if g.get("id")}
+        if "plan-4-heading-sheet-title" not in groups:
+            continue
+        heading = groups["plan-4-heading-sheet-title"]
+        lines = [(float(t.get("x")), float(t.get("y"))) for t in heading.iter(f"{SVG}text")]
+        # SVG's y runs down: the heading's first baseline above every text of the position's drawings.
+        drawn = [float(t.get("y")) for name, group in groups.items() if name.startswith("plan-4-")
+                 and not name.startswith("plan-4-heading") for t in group.iter(f"{SVG}text")]
+        assert lines[0][1] < min(drawn)
+        # Starting right of the mechanism's letters (P, S4, O, A, B: its column down the sheet's left side).
+        letters = [float(t.get("x")) for t in groups["plan-4-mechanism-labels"].iter(f"{SVG}text")]
+        assert lines[0][0] > max(letters)

@@ -859,11 +859,22 @@ def _under_heading(heading: Panel, page: Page, gap: float, sheet: str, form: str
 
 def _heading_cornered(heading: Panel, drawings: Sequence[Panel], page: Page, sheet: str, form: str) -> Page | None:
     """A drawing as tall as the sheet: the heading takes its corner first, the drawings the room left, in the order
-    they stood in or, where that leaves none, in another; None where no order fits."""
-    for order in itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS):
+    they stood in or, where that leaves none, in another; else the first drawing first (a mechanism as tall as the
+    sheet down its left side) and the heading at the top of the room it leaves, over the rest, where nothing stands
+    higher than the heading: the scotch yoke's Russian plan sheet on A3 had none, room for it over its plans.  None
+    where no order fits."""
+    orders = list(itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS))
+    for order in orders:
         cornered = _empty_page(sheet, form, _upright(page))
         if cornered.place(heading) and all(cornered.place(drawing) for drawing in order):
             return cornered
+    for first, *rest in orders if len(drawings) > 1 else ():
+        beside = _empty_page(sheet, form, _upright(page))
+        if not (beside.place(first) and beside.place(heading) and all(beside.place(drawing) for drawing in rest)):
+            continue
+        top = {panel.name: rect[3] for panel, rect, _ in beside.placed}
+        if top[heading.name] >= max(top.values()) - 1e-6:
+            return beside
     return None
 
 
