@@ -1273,16 +1273,44 @@ def dynamics_panel(layers: Sequence[Layer], locale: str,
             part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together,
                          to_scale=False)
         parts.append(part)
+    form = form_of(locale)
+    if sheet is not None and sheet != "none":
+        # A diagram no sheet holds only for its heading (the Russian flywheel's moments, 259 mm wide for the words
+        # over a 200 mm diagram, on an A4's 256 mm) stands with its heading broken; one that fits keeps it whole.
+        parts = [_heading_broken(part) if not holds(sheet, form, width(part), height(part)) else part
+                 for part in parts]
     usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"], to_scale=False)
     if sheet is None or sheet == "none" or larger is None:
         return usual
-    form = form_of(locale)
     if not holds(sheet, form, width(usual), height(usual)):
         return usual
     ways = [replace(usual, layers=tuple(drawn)) for drawn in larger()]
     ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
                   key=lambda way: -width(way) * height(way))
     return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
+
+
+def _heading_broken(part: Panel) -> Panel:
+    """``part`` with the heading of each of its diagrams (its largest bold text) broken at its phrases to no wider
+    than the rest of that diagram, its last line where it stood and the others above, where the heading is the
+    wider; the parts within it likewise."""
+    def broken(layer: Layer) -> Layer:
+        texts = [item for item in layer.items if isinstance(item, Text) and item.weight == "bold"]
+        if not texts:
+            return layer
+        heading = max(texts, key=lambda text: text.size)
+        rest = [item for item in layer.items if item is not heading]
+        if not rest:
+            return layer
+        _, _, x1, _ = bounds_of(rest)
+        room = x1 - heading.at[0]
+        if text_width(heading.text, heading.size, heading.weight) <= room:
+            return layer
+        lines = fitted(heading.text, room, heading.size, heading.weight)
+        return replace(layer, items=(*rest, *plan_layout.title_texts(lines, heading.size, heading.at)))
+
+    return replace(part, layers=tuple(broken(layer) for layer in part.layers),
+                   parts=tuple(_heading_broken(piece) for piece in part.parts))
 
 
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
