@@ -184,7 +184,8 @@ def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None, dynamics:
     from .render.title_block import form_of
 
     machine, _ = _machine_layouts(dynamics, _dynamics_words(scene, analysis, dynamics))
-    pack([dynamics_panel(machine, scene.locale)], scene.drawing.sheet, form_of(scene.locale))
+    pack([dynamics_panel(machine, scene.locale, sheet=scene.drawing.sheet)], scene.drawing.sheet,
+         form_of(scene.locale))
 
 
 def _by_default(scene: Scene, piece: str) -> bool:

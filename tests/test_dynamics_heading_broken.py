@@ -48,3 +48,14 @@ def test_a_diagram_that_fits_keeps_its_heading_on_one_line(tmp_path):
     for locale, sheet in (("en", "A4"), ("ru", "A3")):
         (lines,) = _headings(tmp_path / f"{locale}-{sheet}", locale, sheet)
         assert [text for text, _, _ in lines] == [strings(locale)["dyn_moments"]]
+
+
+def test_check_passes_the_scene_the_run_draws(tmp_path, capsys):
+    """`check` packs the dynamics drawing as the sheets do, to refuse what no sheet holds: it packed it without the
+    scene's sheet, so it refused the Russian flywheel on A4 that the run then drew."""
+    text = starter("flywheel", "ru")
+    assert "[drawing]" not in text
+    scene = tmp_path / "flywheel.toml"
+    scene.write_text(f'{text}\n[drawing]\nsheet = "A4"\n', encoding="utf-8")
+    assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 0

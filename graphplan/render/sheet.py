@@ -1276,9 +1276,9 @@ def dynamics_panel(layers: Sequence[Layer], locale: str,
     form = form_of(locale)
     if sheet is not None and sheet != "none":
         # A diagram no sheet holds only for its heading (the Russian flywheel's moments, 259 mm wide for the words
-        # over a 200 mm diagram, on an A4's 256 mm) stands with its heading broken; one that fits keeps it whole.
-        parts = [_heading_broken(part) if not holds(sheet, form, width(part), height(part)) else part
-                 for part in parts]
+        # over a 200 mm diagram, on an A4's 256 mm) stands with its heading broken; one that fits keeps it whole,
+        # and one too big either way is refused as it stands, in the words `check` uses.
+        parts = [_fitting(part, sheet, form) for part in parts]
     usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"], to_scale=False)
     if sheet is None or sheet == "none" or larger is None:
         return usual
@@ -1288,6 +1288,14 @@ def dynamics_panel(layers: Sequence[Layer], locale: str,
     ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
                   key=lambda way: -width(way) * height(way))
     return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
+
+
+def _fitting(part: Panel, sheet: str, form: str) -> Panel:
+    """``part``, or where no empty ``sheet`` holds it and one holds it with its headings broken, that."""
+    if holds(sheet, form, width(part), height(part)):
+        return part
+    broken = _heading_broken(part)
+    return broken if holds(sheet, form, width(broken), height(broken)) else part
 
 
 def _heading_broken(part: Panel) -> Panel:
