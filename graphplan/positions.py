@@ -466,15 +466,14 @@ def _turns_round(mechanism: Mechanism, sweep: Motion, working: Working) -> int:
     sense: 0 for a translating link, or for a turning one that comes back to its angle without going round."""
     if working.link in mechanism.translating:
         return 0
-    turned = float(np.sum(_turning_steps(sweep, working)))
+    turned = float(np.sum(_turning_steps(sweep, working.link)))
     sign = 1 if working.sense == "ccw" else -1
     return sign * round(turned / (2.0 * math.pi))
 
 
-def _turning_steps(sweep: Motion, working: Working | int) -> np.ndarray:
-    """The angle (rad) the working link (or link ``working``) turns through at each step of ``sweep``, within ±π: a
-    half-degree step of the crank turns it through less than half a turn, away from a toggle."""
-    link = working if isinstance(working, int) else working.link
+def _turning_steps(sweep: Motion, link: int) -> np.ndarray:
+    """The angle (rad) ``link`` turns through at each step of ``sweep``, within ±π: a half-degree step of the crank
+    turns it through less than half a turn, away from a toggle."""
     angle = np.broadcast_to(np.asarray(sweep.links[link].angle, dtype=float), sweep.driver.shape)
     return np.angle(np.exp(1j * np.diff(angle)))
 
@@ -484,9 +483,11 @@ def _half_turned(mechanism: Mechanism, sweep: Motion, working: Working) -> str:
     half a turn between two neighbouring steps of the sweep: the mechanism passes a singular position each cycle,
     and the motion after it has no extreme to find.  A Whitworth slider driven off a lever whose block passes over
     its pivot was refused without a cause: the flip is the lever's, not the slider's."""
-    # A half-degree step turns a link through far less than a quarter turn, away from a singular position.
-    flipped = [number for number in sorted(sweep.links) if number not in mechanism.translating
-               and np.any(np.abs(_turning_steps(sweep, number)) > 0.75 * math.pi)]
+    # A half-degree step turns a link through far less than a quarter turn, away from a singular position: the
+    # steps where each turning link flips.
+    flips = {number: np.flatnonzero(np.abs(_turning_steps(sweep, number)) > 0.75 * math.pi)
+             for number in sorted(sweep.links) if number not in mechanism.translating}
+    flipped = [number for number, steps in flips.items() if steps.size]
     # A block turns with the lever it slides in: the lever is the link to name.
     carried = {slide.slider for slide in sweep.slides if slide.guide in flipped}
     named = [number for number in flipped if number not in carried]
@@ -498,8 +499,7 @@ def _half_turned(mechanism: Mechanism, sweep: Motion, working: Working) -> str:
         whose = f"the angle of link {named[0]}, which drives it, flips"
     else:
         whose = f"the angles of links {', '.join(map(str, named[:-1]))} and {named[-1]}, which drive it, flip"
-    steps = _turning_steps(sweep, working.link if working.link in flipped else named[0])
-    at = int(np.flatnonzero(np.abs(steps) > 0.75 * math.pi)[0])
+    at = int(flips[working.link if working.link in flipped else named[0]][0])
     crank = np.asarray(sweep.driver, dtype=float)
     near = math.degrees((crank[at] + crank[at + 1]) / 2.0) % 360.0
     return (f": {whose} over by half a turn once a cycle (near φ = {near:.0f}°), at a singular position where "
