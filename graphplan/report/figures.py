@@ -15,7 +15,15 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, settings, svg_text, with_decimal_mark
+from .plot_style import (
+    CRANK_TICK_DEG,
+    PAGE_WIDTH_INCHES,
+    legend_under,
+    new_figure,
+    settings,
+    svg_text,
+    with_decimal_mark,
+)
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -74,10 +82,9 @@ def _balancing_figure(analysis: Analysis):
     marked = exact.balancing[np.isfinite(exact.balancing)]
     if marked.size:
         plot.set_ylim(low, max(high, float(marked.max()) + NUMBER_ROOM * (high - low)))
-    if driver.kind == "crank" and float(np.max(along)) >= CRANK_TICK_DEG * 3:
-        # A crank's angle read at 30° steps, as the kinematic and dynamics diagrams grid it and a turn's twelve
-        # positions stand: matplotlib's 0, 50, 100, … put position 3's 60° between two ticks.
-        plot.set_xticks(np.arange(0.0, float(np.max(along)) + 1e-9, CRANK_TICK_DEG))
+    # A swing under three steps keeps matplotlib's own ticks.
+    if driver.kind == "crank" and (turned := float(np.max(along))) >= CRANK_TICK_DEG * 3:
+        plot.set_xticks(np.arange(0.0, turned + 1e-9, CRANK_TICK_DEG))
     plot.set_xlabel(axis)
     plot.set_ylabel(f"{name}{text['comma']}{unit}")  # a Chinese name takes a full-width comma
     plot.set_title(analysis.scene.title, fontsize=10, parse_math=False)  # the user's text, not mathtext
@@ -90,8 +97,6 @@ def _balancing_figure(analysis: Analysis):
 # The room above the highest marked point for its number, as a share of the value axis (7 pt digits up to 7.5 pt over
 # the point, on an axis some 200 pt tall).
 NUMBER_ROOM = 0.1
-# The step of the crank angle's ticks, degrees; a swing under three steps keeps matplotlib's own.
-CRANK_TICK_DEG = 30.0
 # How far past the largest balancing load without friction the axis runs where a lock sends the one with it off.
 LOCKED_REACH = 3.0
 

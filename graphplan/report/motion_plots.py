@@ -21,7 +21,15 @@ from ..machine_motion import MachineMotion
 from ..render.numerals import number, steady_delta, worked_out
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, settings, svg_text, with_decimal_mark
+from .plot_style import (
+    CRANK_TICK_DEG,
+    PAGE_WIDTH_INCHES,
+    legend_under,
+    new_figure,
+    settings,
+    svg_text,
+    with_decimal_mark,
+)
 
 # Points of the dense solution drawn over the run, besides the solver's own steps: enough for a
 # smooth fluctuation at a few hundred turns.
@@ -260,7 +268,7 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
         half = 0.005 * abs(cycle.max_speed)
         plot.set_ylim(cycle.max_speed - half, cycle.max_speed + half)
     plot.set_xlim(0.0, 360.0)
-    plot.set_xticks(np.arange(0.0, 361.0, 30.0))
+    plot.set_xticks(np.arange(0.0, 361.0, CRANK_TICK_DEG))
     plot.set_xlabel(text["motion_angle_axis"])
     plot.set_ylabel(text["motion_speed_axis"])
     plot.set_title(text["motion_turn"].format(time=number(cycle.start, 4, mark)), fontsize=10)
@@ -332,7 +340,7 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
                                  time=number(motion.stalled_at, 4, mark)))
     plot.axhline(0.0, color=_EVENT, linewidth=0.5)
     plot.set_xlim(0.0, right)
-    plot.set_xticks(np.arange(0.0, right + 1.0, 30.0 * max(1, round(right / 360.0))))
+    plot.set_xticks(np.arange(0.0, right + 1.0, CRANK_TICK_DEG * max(1, round(right / 360.0))))
     plot.set_xlabel(text["motion_turned_axis"])
     plot.set_ylabel(text["motion_moment_axis"])
     plot.set_title(_broken(text["motion_stall_title" if motion.turned else "motion_never_starts_title"], 10),

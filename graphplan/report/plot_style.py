@@ -19,6 +19,9 @@ _CJK_FILES = ("CJK", "wqy", "DroidSansFallback", "SourceHanSans", "NotoSansSC", 
 #: The widest a figure is drawn (inches): the note's line, 170 mm (report/word), less a little, so that a figure
 #: pasted into a report keeps its type at the sizes it was set in (8.4 inches wide, its 8 pt legend printed at 6 pt).
 PAGE_WIDTH_INCHES = 6.6
+#: The step of a crank angle's ticks (degrees), as the kinematic and dynamics diagrams grid a turn and its twelve
+#: positions stand: matplotlib's own 0, 50, 100, … put position 3's 60° between two ticks.
+CRANK_TICK_DEG = 30.0
 
 
 def font_families() -> list[str]:
