@@ -172,9 +172,11 @@ def centres_as_shares(mechanism: Mechanism, motion: Motion) -> tuple[PositionWar
         if spec is None or spec.link != number or not 0.0 < spec.at <= 1.0:
             continue
         line = abs(complex(*motion.point(spec.toward).r[0]) - complex(*motion.point(spec.start).r[0]))
+        if not spec.at > line:
+            continue
         body = motion.span(number, leaving_out=(spec.name,))
         stretched = motion.span(number)
-        if not spec.at > line or body is None or stretched is None or not stretched[0] > body[0] * (1 + 1e-9):
+        if body is None or stretched is None or not stretched[0] > body[0] * (1 + 1e-9):
             continue
         past = spec.at - line
         segment = f"{spec.start}{spec.toward}"
