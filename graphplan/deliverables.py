@@ -14,9 +14,8 @@ has no analysis: only its own pieces and ``results.json``.
 from __future__ import annotations
 
 import dataclasses
-import functools
 import io
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -32,6 +31,7 @@ from .render.primitives import Layer, in_language
 if TYPE_CHECKING:
     from .analysis import Analysis
     from .misreadings import SheetPolygons
+    from .render.dynamics import Redrawings
     from .render.sheet import SheetLever
     from .scene import Scene
 
@@ -183,8 +183,8 @@ def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None, dynamics:
     from .render.sheet import dynamics_panel
     from .render.title_block import form_of
 
-    machine, _ = _machine_layouts(dynamics, _dynamics_words(scene, analysis, dynamics))
-    pack([dynamics_panel(machine, scene.locale, sheet=scene.drawing.sheet)], scene.drawing.sheet,
+    machine, redrawn = _machine_layouts(dynamics, _dynamics_words(scene, analysis, dynamics))
+    pack([dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet)], scene.drawing.sheet,
          form_of(scene.locale))
 
 
@@ -210,42 +210,39 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     sheets = analysis is None and "sheets" in pieces
     # Each laid out once for its own drawing and the sheets of a machine without a linkage.
     machine: list[Layer] = []
-    larger = None
+    redrawn = None
     if analysis is None and ("dynamics" in pieces or sheets and missing(scene, None, "dynamics") is None):
-        machine, larger = _machine_layouts(_dynamics_of(scene, analysis, dynamics), strings(scene.locale))
+        machine, redrawn = _machine_layouts(_dynamics_of(scene, analysis, dynamics), strings(scene.locale))
     if "dynamics" in pieces and analysis is None:
         found += _dynamics_drawings(machine, pieces)
     rotor = _balancing_layers(scene) if "balancing" in pieces or sheets and scene.balancing is not None else []
     if "balancing" in pieces:
         found.append(Drawing("rotor_balancing", rotor))
     if sheets:
-        found += _machine_sheets(scene, machine, rotor, larger)
+        found += _machine_sheets(scene, machine, rotor, redrawn)
     return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.own_words))
             for drawing in found]
 
 
-# The dynamics drawn larger (:func:`graphplan.render.dynamics.larger_layouts`), laid out when called.
-Larger = Callable[[], Sequence[Sequence[Layer]]]
-
-
-def _machine_layouts(dynamics: MachineDynamics, words: Mapping[str, str]) -> tuple[list[Layer], Larger]:
-    """The dynamics drawing, and the same drawn larger for a sheet with room, laid out only when a sheet asks."""
+def _machine_layouts(dynamics: MachineDynamics, words: Mapping[str, str]) -> tuple[list[Layer], Redrawings]:
+    """The dynamics drawing, and the same at other scales for a sheet that asks (larger for one with room, smaller
+    for one that holds none of its diagrams)."""
     from .render import dynamics as dynamics_layout
 
     return (dynamics_layout.layout(dynamics.model, dynamics.flywheel, words),
-            functools.partial(dynamics_layout.larger_layouts, dynamics.model, dynamics.flywheel, words))
+            dynamics_layout.Redrawings(dynamics.model, dynamics.flywheel, words))
 
 
 def _machine_sheets(scene: Scene, machine: list[Layer], rotor: list[Layer],
-                    larger: Larger | None = None) -> list[Drawing]:
-    """The sheets of a machine without a linkage: its dynamics drawing ``machine`` (drawn ``larger`` where the
-    sheet has room) and its rotor's balancing."""
+                    redrawn: Redrawings | None = None) -> list[Drawing]:
+    """The sheets of a machine without a linkage: its dynamics drawing ``machine`` (``redrawn`` at other scales
+    where the sheet asks) and its rotor's balancing."""
     from .render.sheet import balancing_panel, dynamics_panel, machine_sheets
     from .render.title_block import details_of, form_of
 
     details = details_of(scene.project, scene.title, form_of(scene.locale))
     details = dataclasses.replace(details, title=details.title or scene.title)
-    dynamics = [dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet)] if machine else []
+    dynamics = [dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet)] if machine else []
     balancing = [balancing_panel(rotor, scene.locale)] if rotor else []
     return [Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size)
             for sheet in machine_sheets(dynamics, balancing, scene.drawing.sheet, scene.locale, details)]
@@ -304,17 +301,17 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         # The dynamics alone are drawn at scales of their own: choosing μl would lay every sheet out at a few μl
         # (the shaper's seconds) for nothing drawn.  The scene is still refused where the choice refuses it.
         draw.refuse_unfit_length_scale(analysis)
-    machine, larger = None, None
+    machine, redrawn = None, None
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):
         tell("drawing the dynamics")
         dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
-        machine, larger = _machine_layouts(dynamics, _dynamics_words(analysis.scene, analysis, dynamics))
+        machine, redrawn = _machine_layouts(dynamics, _dynamics_words(analysis.scene, analysis, dynamics))
     # The sheets hold the drawings that are also written on their own: each is laid out once, where the sheets hold
     # it as it is on its own (:func:`_drawn_alone`).
     if "sheets" in pieces:
         tell("laying out the sheets")
-    panels = _course_panels(analysis, machine, larger) if "sheets" in pieces else None
+    panels = _course_panels(analysis, machine, redrawn) if "sheets" in pieces else None
     if "positions" in pieces:
         tell("drawing the plan of positions")
         layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
@@ -512,10 +509,10 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_
             sheet.lever_drawn_scale if sheet.lever is not None else None)
 
 
-def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larger | None = None):
+def _course_panels(analysis: Analysis, machine: list | None = None, redrawn: Redrawings | None = None):
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
-    the dynamics drawing ``machine`` where the run draws one (drawn ``larger`` where the sheet has room), and the
-    rotor's balancing where the scene has it."""
+    the dynamics drawing ``machine`` where the run draws one (``redrawn`` at other scales where the sheet asks), and
+    the rotor's balancing where the scene has it."""
     from . import load_diagrams
     from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel, load_diagrams_panel
 
@@ -535,7 +532,7 @@ def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larg
             from .render.load_diagrams import SMALLER_FIELDS
 
             return ((load_diagrams_panel(drawn, scene.locale, field=field),) for field in SMALLER_FIELDS)
-    dynamics = (dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet),) if machine is not None else ()
+    dynamics = (dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet),) if machine is not None else ()
     # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
     balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()
     return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing, loads=loads,

@@ -14,7 +14,7 @@ from graphplan.analysis import analyse
 from graphplan.dynamics import equivalent_model_of
 from graphplan.flywheel import flywheel_for
 from graphplan.kinematic_diagrams import of_analysis
-from graphplan.render.dynamics import larger_layouts, layout
+from graphplan.render.dynamics import Redrawings, layout
 from graphplan.render.primitives import Polyline, Text
 from graphplan.render.sheet import course_sheets, diagrams_panel, dynamics_panel, dynamics_sheet, kinematics_sheet
 from graphplan.scales import standard_scale
@@ -101,7 +101,7 @@ def test_the_dynamics_fill_an_a1_sheet_at_a_standard_angle_scale(shaper):
     flywheel = flywheel_for(model, 0.05)
     usual = layout(model, flywheel)
     (before,) = dynamics_sheet([dynamics_panel(usual, "en")], "A1")
-    (sheet,) = dynamics_sheet([dynamics_panel(usual, "en", lambda: larger_layouts(model, flywheel), "A1")], "A1")
+    (sheet,) = dynamics_sheet([dynamics_panel(usual, "en", Redrawings(model, flywheel), "A1")], "A1")
     grown, was = _share(sheet.panels["dynamics"], sheet.frame), _share(before.panels["dynamics"], before.frame)
     assert grown >= 0.5 and grown > was * 1.15
     written = _written(sheet, "dynamics-moments")
@@ -119,8 +119,8 @@ def test_je_turned_runs_at_its_own_angle_scale_so_that_the_cycle_above_may_run_l
     as the cycle is long, and held the whole drawing at 1.5°/mm).  Each is drawn as long as its own μφ says."""
     model = equivalent_model_of(shaper)
     flywheel = flywheel_for(model, 0.05)
-    (sheet,) = dynamics_sheet([dynamics_panel(layout(model, flywheel), "en",
-                                              lambda: larger_layouts(model, flywheel), "A1")], "A1")
+    (sheet,) = dynamics_sheet([dynamics_panel(layout(model, flywheel), "en", Redrawings(model, flywheel),
+                                              "A1")], "A1")
     above = _number(r"μφ = ([0-9.]+)°/mm", _written(sheet, "dynamics-moments"))
     turned = _number(r"μφ = ([0-9.]+)°/mm", _written(sheet, "dynamics-inertia"))
     assert above == 1.0 and turned > above

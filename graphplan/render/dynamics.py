@@ -212,6 +212,47 @@ def larger_layouts(model: EquivalentModel, flywheel: Flywheel | None = None,
     return found
 
 
+# Drawn smaller where no sheet of the scene's format holds the usual drawing even diagram by diagram (a V-twin's
+# moments, 252 mm wide with their axis's words, on an A4's 251 mm): the cycle at 2.5°, 3° and 4°/mm besides the
+# usual 2°/mm, and the fields as high as usual or this many times it.
+SMALLER_ABSCISSAE_MM = (ABSCISSA_MM, 144.0, 120.0, 90.0)
+SMALLER_FIELDS = (1.0, 0.8, 0.6)
+
+
+def smaller_layouts(model: EquivalentModel, flywheel: Flywheel | None = None,
+                    text: Mapping[str, str] | None = None) -> list[list[Layer]]:
+    """The dynamics sheet (:func:`layout`) drawn smaller, for a small sheet that holds no diagram of the usual
+    one: on each of :data:`SMALLER_ABSCISSAE_MM` with the fields each of :data:`SMALLER_FIELDS` times as high, but
+    the usual size; at round scales, each its own."""
+    found: list[list[Layer]] = []
+    seen = {scales_for(model)}
+    for abscissa in SMALLER_ABSCISSAE_MM:
+        for fields in SMALLER_FIELDS:
+            scales = scales_for(model, abscissa, fields)
+            if scales not in seen:
+                seen.add(scales)
+                found.append(layout(model, flywheel, text, scales))
+    return found
+
+
+@dataclass(frozen=True)
+class Redrawings:
+    """The dynamics drawing at scales other than its usual ones, for a sheet: each laid out only when a sheet
+    asks, for the usual drawing fills a course sheet of its format and most runs ask for neither."""
+
+    model: EquivalentModel
+    flywheel: Flywheel | None = None
+    text: Mapping[str, str] | None = None
+
+    def larger(self) -> list[list[Layer]]:
+        """:func:`larger_layouts`: for a big sheet with room."""
+        return larger_layouts(self.model, self.flywheel, self.text)
+
+    def smaller(self) -> list[list[Layer]]:
+        """:func:`smaller_layouts`: for a small sheet that holds none of the usual diagrams."""
+        return smaller_layouts(self.model, self.flywheel, self.text)
+
+
 def dynamics_svg(model: EquivalentModel, flywheel: Flywheel | None = None,
                  text: Mapping[str, str] | None = None) -> str:
     """The SVG text of the dynamics sheet (:func:`layout`)."""
@@ -890,5 +931,5 @@ def nice_step(rough: float) -> float:
     return 10.0 * power
 
 
-__all__ = ["FlywheelNumbers", "Scales", "dynamics_svg", "flywheel_numbers", "larger_layouts", "layout", "nice_step",
-           "ordinate_axis", "scales_for"]
+__all__ = ["FlywheelNumbers", "Redrawings", "Scales", "dynamics_svg", "flywheel_numbers", "larger_layouts", "layout",
+           "nice_step", "ordinate_axis", "scales_for", "smaller_layouts"]

@@ -58,7 +58,7 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
-from .dynamics import TITLE_LAYER
+from .dynamics import TITLE_LAYER, Redrawings
 from .force_lever import LEVER_FIELD
 from .force_rows import HEADING_LAYER, has_heading
 from .force_sheet_choice import (
@@ -1248,19 +1248,39 @@ def _kinematics_laid_out(analysis: Analysis) -> list[Panel]:
                                     lambda: kinematics_panels(analysis))
 
 
-def dynamics_panel(layers: Sequence[Layer], locale: str,
-                   larger: Callable[[], Sequence[Sequence[Layer]]] | None = None, sheet: str | None = None) -> Panel:
+def dynamics_panel(layers: Sequence[Layer], locale: str, redrawn: Redrawings | None = None,
+                   sheet: str | None = None) -> Panel:
     """The dynamics drawing (:func:`graphplan.render.dynamics.layout`) as a panel.
 
     Where no sheet holds it whole, its diagrams stand apart: the energy–mass
     diagram with Je(φ) under it while a sheet holds the two together, for
-    they share the axis of Je.  ``larger`` lays out the same drawing drawn
-    larger (:func:`graphplan.render.dynamics.larger_layouts`); it is called
-    only where an empty ``sheet`` holds the usual one whole, and those of
-    them it holds too are the panel's ways, largest first, so that the
-    drawing fills the sheet as a course project's does; its parts stay the
-    usual drawing's.
+    they share the axis of Je.  ``redrawn`` lays out the same drawing at
+    other scales.  Where an empty ``sheet`` holds the usual one whole, those
+    drawn larger that it holds too are the panel's ways, largest first, so
+    that the drawing fills the sheet as a course project's does; their parts
+    stay the usual drawing's.  Where it holds the usual one not even diagram
+    by diagram, the panel is the largest drawn smaller that it holds so, its
+    scales the program's to choose as the usual ones are.
     """
+    form = form_of(locale)
+    usual = _dynamics_drawn(layers, locale, sheet, form)
+    if sheet is None or sheet == "none" or redrawn is None:
+        return usual
+    if not holds(sheet, form, width(usual), height(usual)):
+        if _held_by_parts(usual, sheet, form):
+            return usual
+        smaller = (_dynamics_drawn(drawn, locale, sheet, form) for drawn in redrawn.smaller())
+        held = [way for way in smaller if _held_by_parts(way, sheet, form)]
+        # Where none is held, the usual one is refused as it stands, in the words `check` uses.
+        return max(held, key=lambda way: width(way) * height(way)) if held else usual
+    ways = [replace(usual, layers=tuple(drawn)) for drawn in redrawn.larger()]
+    ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
+                  key=lambda way: -width(way) * height(way))
+    return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
+
+
+def _dynamics_drawn(layers: Sequence[Layer], locale: str, sheet: str | None, form: str) -> Panel:
+    """The dynamics drawing ``layers`` as a panel whose parts are its diagrams, on ``sheet``."""
     # Its diagrams are at scales fitted to the machine, none a length's: no μl in a title block, nor in advice.
     alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,), to_scale=False) for layer in layers
              if layer.name != TITLE_LAYER}
@@ -1273,21 +1293,17 @@ def dynamics_panel(layers: Sequence[Layer], locale: str,
             part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together,
                          to_scale=False)
         parts.append(part)
-    form = form_of(locale)
     if sheet is not None and sheet != "none":
         # A diagram no sheet holds only for its heading (the Russian flywheel's moments, 259 mm wide for the words
-        # over a 200 mm diagram, on an A4's 256 mm) stands with its heading broken; one that fits keeps it whole,
-        # and one too big either way is refused as it stands, in the words `check` uses.
+        # over a 200 mm diagram, on an A4's 256 mm) stands with its heading broken; one that fits keeps it whole.
         parts = [_fitting(part, sheet, form) for part in parts]
-    usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"], to_scale=False)
-    if sheet is None or sheet == "none" or larger is None:
-        return usual
-    if not holds(sheet, form, width(usual), height(usual)):
-        return usual
-    ways = [replace(usual, layers=tuple(drawn)) for drawn in larger()]
-    ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
-                  key=lambda way: -width(way) * height(way))
-    return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
+    return Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"], to_scale=False)
+
+
+def _held_by_parts(panel: Panel, sheet: str, form: str) -> bool:
+    """Whether an empty ``sheet`` holds ``panel`` whole, or else each of its parts so, as the packing sets them."""
+    return holds(sheet, form, width(panel), height(panel)) or \
+        bool(panel.parts) and all(_held_by_parts(part, sheet, form) for part in panel.parts)
 
 
 def _fitting(part: Panel, sheet: str, form: str) -> Panel:
