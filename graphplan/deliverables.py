@@ -184,7 +184,7 @@ def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None, dynamics:
     from .render.title_block import form_of
 
     machine, redrawn = _machine_layouts(dynamics, _dynamics_words(scene, analysis, dynamics))
-    pack([dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet)], scene.drawing.sheet,
+    pack([dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet, filled=False)], scene.drawing.sheet,
          form_of(scene.locale))
 
 

@@ -98,3 +98,20 @@ def test_check_passes_a_russian_linkage_with_dynamics_on_a4(tmp_path, capsys):
     scene = tmp_path / "ratchet.toml"
     scene.write_text(edited + "\n[dynamics]\ndelta = 0.05\n", encoding="utf-8")
     assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+
+
+def test_check_lays_out_no_larger_drawing_to_see_whether_a_sheet_holds_the_usual_one(tmp_path, monkeypatch, capsys):
+    """Passing the drawings at other scales to `check`'s packing had it lay out every larger one, 0.9 s of the
+    shaper starter's check on A1, for a question the usual drawing answers."""
+    from graphplan.render import dynamics as dynamics_layout
+    from graphplan.starters import starter
+
+    def refused(*args, **kwargs):
+        raise AssertionError("laid out larger")
+
+    monkeypatch.setattr(dynamics_layout, "larger_layouts", refused)
+    text = starter("shaper")
+    assert 'sheet              = "A1"' in text and "[dynamics]" in text
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0, capsys.readouterr().err

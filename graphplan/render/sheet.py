@@ -1249,7 +1249,7 @@ def _kinematics_laid_out(analysis: Analysis) -> list[Panel]:
 
 
 def dynamics_panel(layers: Sequence[Layer], locale: str, redrawn: Redrawings | None = None,
-                   sheet: str | None = None) -> Panel:
+                   sheet: str | None = None, filled: bool = True) -> Panel:
     """The dynamics drawing (:func:`graphplan.render.dynamics.layout`) as a panel.
 
     Where no sheet holds it whole, its diagrams stand apart: the energy–mass
@@ -1260,7 +1260,9 @@ def dynamics_panel(layers: Sequence[Layer], locale: str, redrawn: Redrawings | N
     that the drawing fills the sheet as a course project's does; their parts
     stay the usual drawing's.  Where it holds the usual one not even diagram
     by diagram, the panel is the largest drawn smaller that it holds so, its
-    scales the program's to choose as the usual ones are.
+    scales the program's to choose as the usual ones are.  Not ``filled``,
+    the larger ones are not laid out: `check` asks only whether a sheet
+    holds the drawing.
     """
     form = form_of(locale)
     usual = _dynamics_drawn(layers, locale, sheet, form)
@@ -1273,6 +1275,8 @@ def dynamics_panel(layers: Sequence[Layer], locale: str, redrawn: Redrawings | N
         held = [way for way in smaller if _held_by_parts(way, sheet, form)]
         # Where none is held, the usual one is refused as it stands, in the words `check` uses.
         return max(held, key=lambda way: width(way) * height(way)) if held else usual
+    if not filled:
+        return usual
     ways = [replace(usual, layers=tuple(drawn)) for drawn in redrawn.larger()]
     ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
                   key=lambda way: -width(way) * height(way))
