@@ -4,7 +4,9 @@ Read from the drawn texts: with many positions on a small crank the numbers ran 
 read "3433") and the labeller put half of them inside the circle among the spokes.
 """
 
+import cmath
 import itertools
+import math
 import re
 from pathlib import Path
 
@@ -76,3 +78,92 @@ def test_no_number_round_the_crank_is_written_over_an_extreme_position(name):
     for item in layers["labels"]:
         if isinstance(item, Text) and NUMBER.match(item.text):
             assert not any(text_box(item).intersects(line) for line in lines), item.text
+
+
+V_TWIN = """
+[scene]
+title = "90-degree V-twin"
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.04
+rpm = 3000.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.14
+guide = { through = "O", angle = 45.0 }
+assembly = "forward"
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["A", "D"]
+length = 0.14
+guide = { through = "O", angle = 135.0 }
+assembly = "forward"
+[points]
+S3 = { link = 3, from = "A", toward = "B", at = 0.04 }
+S5 = { link = 5, from = "A", toward = "D", at = 0.04 }
+[positions]
+count = 24
+start = "extreme"
+number_from = 0
+working = { link = 4, sense = "backward" }
+plans = [3, 15]
+[drawing]
+length_scale = 0.002
+"""
+
+
+def _number_order(plan, layers) -> list[tuple[str, float, float, float]]:
+    """Each number round the crank's circle with the angles (about the pivot, radians) of its box's centre and of
+    the pins of the positions before and after it."""
+    driver = plan.mechanism.driver
+    pivot = plan.mechanism.scene.frame_points[driver.pivot] / plan.length_scale
+    pins = [complex(value) / plan.length_scale for value in plan.positions.points[driver.joint].r]
+    found = []
+    for item in layers["labels"]:
+        if not (isinstance(item, Text) and item.text.isdigit()):
+            continue
+        index = plan.numbers.index(int(item.text))
+        centre = complex(*text_box(item).centroid.coords[0]) - pivot
+        own = pins[index] - pivot
+
+        def turn(pin, own=own):
+            return cmath.phase((pin - pivot) / own)
+
+        ends = plan.mechanism.scene.driver.swing is not None
+        before = turn(pins[index - 1]) if index or not ends else None
+        after = turn(pins[(index + 1) % len(pins)]) if index < len(pins) - 1 or not ends else None
+        # A swing's end has a neighbour on one side only: the other way it may go as far as a half turn.
+        before = -math.copysign(math.pi, after) if before is None else before
+        after = -math.copysign(math.pi, before) if after is None else after
+        found.append((item.text, cmath.phase(centre / own), before, after))
+    return found
+
+
+def test_a_number_set_aside_round_the_circle_is_not_carried_past_its_neighbours_pin():
+    """Round a V-twin's crank drawn 20 mm long, the 14 ran into the 15 of a plan position, numbered first, and was set
+    28° round the circle, beyond it: the numbers read 13, 15, 14.  A number set aside stays between the pins of the
+    positions before and after it (going out on a leader instead)."""
+    plan = positions_plan(analyse(loads(V_TWIN)))
+    layers = {layer.name: layer.items for layer in positions.layout(plan)}
+    found = _number_order(plan, layers)
+    assert {text for text, *_ in found} >= {"13", "14", "15", "16"}
+    for text, angle, before, after in found:
+        assert before < angle < after, (text, angle, before, after)
+
+
+@pytest.mark.parametrize("name", CRANKS)
+def test_every_fixtures_numbers_read_in_order_round_the_crank(name):
+    plan = positions_plan(analyse(loads(Path(f"fixtures/{name}.toml").read_text(encoding="utf-8"))))
+    layers = {layer.name: layer.items for layer in positions.layout(plan)}
+    for text, angle, before, after in _number_order(plan, layers):
+        # A crank turning clockwise has the position before it on the counter-clockwise side.
+        assert min(before, after) < angle < max(before, after), (text, angle, before, after)

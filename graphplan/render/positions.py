@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import itertools
 import math
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -386,6 +386,7 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[Base
         return _Number(name, pin, outward / abs(outward) if abs(outward) > 1e-9 else 1j, blocks[0] if blocks else None)
 
     every = [number(str(value), plan.positions, index) for index, value in enumerate(plan.numbers)]
+    pins = [item.pin for item in every]
     always = [every[0], *(item for index, item in enumerate(every) if index and plan.numbers[index] in plan.marked)]
     always += [number(name, plan.emphasised, index)
                for index, name in enumerate(plan.extremes) if name and index < plan.emphasised.count]
@@ -404,7 +405,7 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[Base
         return True
 
     for item in always:
-        text, leader = _set_aside(item, centre, boxes, bold)
+        text, leader = _set_aside(item, centre, boxes, bold, pins)
         if leader is not None and with_its_letters(item):
             continue
         texts.append(text)
@@ -431,13 +432,13 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[Base
             # pivot off a link's ink, left the 5′ no spot but the pivot's triangle.
             if step > drawing_step or with_its_letters(item):
                 continue
-            text, leader = _set_aside(item, centre, boxes, bold)
+            text, leader = _set_aside(item, centre, boxes, bold, pins)
         spaced = spaced_box(text, LABEL_SPACING / 2)
         if any(spaced.intersects(other) for other in boxes):
             if step > drawing_step:
                 continue  # numbered one in every few already: one more left out is not missed
             # Every position is numbered: this one is set aside on a leader rather than left out.
-            text, leader = _set_aside(item, centre, boxes, bold)
+            text, leader = _set_aside(item, centre, boxes, bold, pins)
             spaced = spaced_box(text, LABEL_SPACING / 2)
             if any(spaced.intersects(other) for other in boxes):
                 continue
@@ -449,12 +450,13 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[Base
 
 
 def _set_aside(item: _Number, centre: complex, boxes: list[BaseGeometry],
-               lines: list[BaseGeometry]) -> tuple[Text, Polyline | None]:
+               lines: list[BaseGeometry], pins: Sequence[complex] = ()) -> tuple[Text, Polyline | None]:
     """The number of ``item`` beside its pin, or where that runs into one of ``boxes`` or ``lines``, the nearest spot
-    clear of them a few degrees round the circle or farther out, with a leader from its pin; clear of the boxes
-    alone where no spot near is clear of both."""
+    clear of them a few degrees round the circle, short of the next of the positions' ``pins`` each way, or farther
+    out, with a leader from its pin; clear of the boxes alone where no spot near is clear of both."""
+    back, ahead = _room_round(item, centre, pins)
     spots = [(out, turn) for out in (0.0, 2.0, 4.0, 6.0, 9.0, 12.0) for step in range(13)
-             for turn in ((0.0,) if step == 0 else (step * _ROUND_STEP, -step * _ROUND_STEP))]
+             for turn in ((0.0,) if step == 0 else (step * _ROUND_STEP, -step * _ROUND_STEP)) if -back < turn < ahead]
     for avoided in (lines, []):
         for out, turn in spots:
             turned = cmath.exp(1j * turn)
@@ -472,6 +474,23 @@ def _set_aside(item: _Number, centre: complex, boxes: list[BaseGeometry],
             start = item.pin + along / abs(along) * _NUMBER_GAP_MM
             return text, Polyline(((start.real, start.imag), near), Stroke(0.18, _NUMBER_COLOUR))
     return _number_text(item, 0.0), None  # nowhere near is clear: beside its pin after all
+
+
+def _room_round(item: _Number, centre: complex, pins: Sequence[complex]) -> tuple[float, float]:
+    """How far round the circle (radians, clockwise and counter-clockwise) ``item``'s number may be set aside
+    without passing the pin of another position: past it the numbers read out of order, as 13, 15, 14 did under a
+    V-twin's crank, the 14 carried round beyond the 15 of a plan position."""
+    own = item.pin - centre
+    back = ahead = math.pi
+    for pin in pins:
+        if abs(pin - item.pin) < _SAME_PIN_MM or abs(own) < 1e-9 or abs(pin - centre) < 1e-9:
+            continue
+        turn = cmath.phase((pin - centre) / own)
+        if turn > 0:
+            ahead = min(ahead, turn)
+        elif turn < 0:
+            back = min(back, -turn)
+    return back, ahead
 
 
 # A crank pin nearer than this (mm) to a point lettered with a prime is that point.
