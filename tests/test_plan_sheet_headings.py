@@ -155,3 +155,63 @@ def test_a_heading_stands_over_the_plans_beside_a_mechanism_as_tall_as_the_sheet
         # Starting right of the mechanism's letters (P, S4, O, A, B: its column down the sheet's left side).
         letters = [float(t.get("x")) for t in groups["plan-4-mechanism-labels"].iter(f"{SVG}text")]
         assert lines[0][0] > max(letters)
+
+
+BOXER = """
+[scene]
+title = "Opposed twin"
+locale = "ru"
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.04
+rpm = 3000.0
+[points]
+C = { link = 2, from = "O", toward = "A", at = -0.04 }
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.14
+guide = { through = "O", angle = 0.0 }
+assembly = "forward"
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["C", "D"]
+length = 0.14
+guide = { through = "O", angle = 180.0 }
+assembly = "forward"
+[positions]
+count = 12
+start = "extreme"
+working = { link = 4, sense = "backward" }
+plans = [3, 8]
+[drawing]
+length_scale = 0.0025
+sheet = "A4"
+"""
+
+
+def test_only_the_first_sheet_of_a_plan_sheet_has_its_plain_title_the_others_are_continued():
+    """A boxer twin's plans of position 3 on a Russian A4 began bare (its mechanism and velocity plan fill the first
+    sheet) and the sheet after it, the acceleration plan's, was headed with the plain title, so that it read as
+    where position 3 began; it is headed "continued"."""
+    from graphplan.render.sheet import kinematics_panels, kinematics_sheet
+
+    analysis = analyse(graphplan.load_text(BOXER))
+    sheets = kinematics_sheet(kinematics_panels(analysis), "A4", "ru")
+    for position in analysis.plans:
+        own = [sheet for sheet in sheets if any(re.fullmatch(rf"plan-{position.number}(-.+)?", name)
+                                                for name in sheet.panels)]
+        assert len(own) >= 2
+        # Each sheet after the first that carries the heading carries it "continued" (outside the title block).
+        for sheet in own[1:]:
+            written = " ".join(item.text for layer in sheet.layers if layer.name != "title-block"
+                               for item in layer.items if isinstance(item, Text))
+            assert "(продолжение)" in written, (position.number, sheet.number, written)

@@ -803,19 +803,22 @@ _MOST_HEADED_ORDERS = 6
 
 
 def _headed(panel: Panel, pages: list[Page], sheet: str, form: str, turns: Sequence[bool]) -> list[Page] | None:
-    """``pages`` of ``panel``'s parts laid out again under its heading (the sheets after the first headed one under
-    its continued heading, the first of its ways that the sheet holds), each page's drawings that much lower, on no
+    """``pages`` of ``panel``'s parts laid out again under its heading (the sheets after the first under its
+    continued heading, the first of its ways that the sheet holds), each page's drawings that much lower, on no
     more pages; a page whose drawings leave no room for a heading stays as it was, bare.  None where no page takes
     the heading.  All or none, the slider-crank's plan sheets on an A4 (the mechanism alone, then both plans, as
-    tall as the sheet) stood bare, the first of them with half the sheet empty."""
+    tall as the sheet) stood bare, the first of them with half the sheet empty.  A second sheet is headed "continued"
+    whether or not the first had room for the heading: a boxer twin's plans of position 3 on a Russian A4 began bare
+    (its mechanism and velocity plan filling the sheet), and the sheet after it, headed with the plain title, read as
+    where they began."""
     # As far over the drawings as the whole sets its heading over its fields.
     parts_top = bounds([layer for layer in panel.layers if layer not in panel.heading])[3]
     gap = bounds(panel.heading)[1] - parts_top
     headed: list[Page] = []
     any_headed = False
-    for page in pages:
-        ways = panel.continued_heading if any_headed and panel.continued_heading else (panel.heading,
-                                                                                       *panel.broken_heading)
+    for number, page in enumerate(pages):
+        ways = panel.continued_heading if number and panel.continued_heading else (panel.heading,
+                                                                                   *panel.broken_heading)
         # Lettering, at no length scale: a sheet of plans under it leaves its scale box empty.
         fresh = next((found for way in ways
                       for found in [_under_heading(Panel(f"{panel.name}-heading", way, to_scale=False), page, gap,
