@@ -126,21 +126,17 @@ def _number_order(plan, layers) -> list[tuple[str, float, float, float]]:
     the pins of the positions before and after it."""
     driver = plan.mechanism.driver
     pivot = plan.mechanism.scene.frame_points[driver.pivot] / plan.length_scale
-    pins = [complex(value) / plan.length_scale for value in plan.positions.points[driver.joint].r]
+    pins = [complex(value) / plan.length_scale - pivot for value in plan.positions.points[driver.joint].r]
+    ends = plan.mechanism.scene.driver.swing is not None
     found = []
     for item in layers["labels"]:
         if not (isinstance(item, Text) and item.text.isdigit()):
             continue
         index = plan.numbers.index(int(item.text))
         centre = complex(*text_box(item).centroid.coords[0]) - pivot
-        own = pins[index] - pivot
-
-        def turn(pin, own=own):
-            return cmath.phase((pin - pivot) / own)
-
-        ends = plan.mechanism.scene.driver.swing is not None
-        before = turn(pins[index - 1]) if index or not ends else None
-        after = turn(pins[(index + 1) % len(pins)]) if index < len(pins) - 1 or not ends else None
+        own = pins[index]
+        before = cmath.phase(pins[index - 1] / own) if index or not ends else None
+        after = cmath.phase(pins[(index + 1) % len(pins)] / own) if index < len(pins) - 1 or not ends else None
         # A swing's end has a neighbour on one side only: the other way it may go as far as a half turn.
         before = -math.copysign(math.pi, after) if before is None else before
         after = -math.copysign(math.pi, before) if after is None else after
