@@ -407,13 +407,8 @@ def _load_diagram_layers(analysis: Analysis) -> list[Layer]:
 def _dynamics_drawings(machine: list[Layer], pieces: tuple[str, ...]) -> list[Drawing]:
     """The dynamics drawing, and where the run writes the note, the parts it shows it in (``dynamics-1.svg``, ...):
     whole, 400 mm wide, it printed on the note's page with letters 1 mm high."""
-    from .render.dynamics import HEADING, TITLE_LAYER
+    from .render.dynamics import TITLE_LAYER, headings
     from .render.note_parts import note_parts_in_order
-    from .render.primitives import Text
-
-    def headings(part: list[Layer]) -> tuple[str, ...]:
-        return tuple(item.text for layer in part if layer.name != TITLE_LAYER for item in layer.items
-                     if isinstance(item, Text) and item.weight == "bold" and item.size == HEADING)
 
     parts = note_parts_in_order(machine, TITLE_LAYER) if "note" in pieces else None
     return [Drawing("dynamics", machine),

@@ -189,7 +189,9 @@ def test_check_refuses_a_dynamics_drawing_no_sheet_holds_as_the_run_does_without
         tmp_path, capsys, monkeypatch):
     """The dynamics diagrams are at scales the program fits to the machine: no μl changes them.  A drawing of them no
     sheet holds (here the steep tangents run on as far as they once did) is refused by check as by the run, and the
-    advice names a bigger sheet or none, not drawing.length_scale."""
+    advice names a bigger sheet or none, not drawing.length_scale.  It names the diagram by its heading, as a reader
+    knows it: its id ('Dynamics of the machine: dynamics-flywheel') told them nothing."""
+    from graphplan.locale import strings
     from graphplan.render import dynamics as dynamics_layout
 
     monkeypatch.setattr(dynamics_layout, "CUT_TANGENT_RUN_MM", 300.0)
@@ -199,7 +201,7 @@ def test_check_refuses_a_dynamics_drawing_no_sheet_holds_as_the_run_does_without
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 2
     ran = capsys.readouterr().err
     error = checked.strip().splitlines()[-1]
-    assert error.startswith("graphplan: error: drawing.sheet: the drawing 'Dynamics of the machine: dynamics-")
+    assert error.startswith(f"graphplan: error: drawing.sheet: the drawing '{strings('en')['dyn_energy_mass']}' (")
     assert error in ran.splitlines()
     assert "length_scale" not in error and error.endswith("clear of its title block); sheet = \"none\" (got 'A1')")
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -317,6 +317,13 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
     title = words["dyn_title"] if flywheel is not None else words["dyn_title_model"]
     layers.append(Layer(TITLE_LAYER, (Text((xmin, ymax + 8.0), title, TITLE, "start", weight="bold"),)))
     return layers
+
+
+def headings(layers: Iterable[Layer]) -> tuple[str, ...]:
+    """The headings of the diagrams ``layers`` draw, the drawing's title aside: what names a diagram to a reader,
+    where its layer's name is an id."""
+    return tuple(item.text for layer in layers if layer.name != TITLE_LAYER for item in layer.items
+                 if isinstance(item, Text) and item.weight == "bold" and item.size == HEADING)
 
 
 def _layer(name: str, items: Sequence[Primitive], dx: float, dy: float) -> Layer:

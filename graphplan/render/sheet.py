@@ -59,6 +59,7 @@ from .drawings import (
     with_length_scale,
 )
 from .dynamics import TITLE_LAYER, Redrawings
+from .dynamics import headings as dynamics_headings
 from .force_lever import LEVER_FIELD
 from .force_rows import HEADING_LAYER, has_heading
 from .force_sheet_choice import (
@@ -1286,8 +1287,9 @@ def dynamics_panel(layers: Sequence[Layer], locale: str, redrawn: Redrawings | N
 def _dynamics_drawn(layers: Sequence[Layer], locale: str, sheet: str | None, form: str) -> Panel:
     """The dynamics drawing ``layers`` as a panel whose parts are its diagrams, on ``sheet``."""
     # Its diagrams are at scales fitted to the machine, none a length's: no μl in a title block, nor in advice.
-    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,), to_scale=False) for layer in layers
-             if layer.name != TITLE_LAYER}
+    # Each is labelled by its heading, which a refusal names it by: "dynamics-moments" told a reader nothing.
+    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,), label="; ".join(dynamics_headings((layer,))),
+                               to_scale=False) for layer in layers if layer.name != TITLE_LAYER}
     parts: list[Panel] = []
     for name, part in alone.items():
         if name == "inertia" and "energy-mass" in alone:
@@ -1295,7 +1297,7 @@ def _dynamics_drawn(layers: Sequence[Layer], locale: str, sheet: str | None, for
         if name == "energy-mass" and "inertia" in alone:
             together = (part, alone["inertia"])
             part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together,
-                         to_scale=False)
+                         "; ".join(piece.label for piece in together), to_scale=False)
         parts.append(part)
     if sheet is not None and sheet != "none":
         # A diagram no sheet holds only for its heading (the Russian flywheel's moments, 259 mm wide for the words
