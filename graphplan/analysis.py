@@ -47,6 +47,7 @@ from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_b
 from .mechanism import Mechanism, build
 from .misreadings import SheetsDrawn, misread
 from .motion import ILL_CONDITIONED_DEG, ILL_CONDITIONED_SINE, Motion, PositionWarning, solve, toggles_between
+from .overlaps import blocks_passing_through, coinciding_joints
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
@@ -236,6 +237,7 @@ def analyse(scene: Scene) -> Analysis:
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
                             + _working_stroke_quicker(mechanism, positions) + _block_near_pivot(mechanism, paths)
+                            + coinciding_joints(mechanism, paths) + blocks_passing_through(mechanism, paths)
                             + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + resisting_forces_turning(mechanism, positions, motion)
@@ -274,7 +276,8 @@ def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
                                  "inertia-too-large", "centre-as-share", "resisting-turns-round",
-                                 "along-moving-point", "working-stroke-quicker", "block-near-pivot"})
+                                 "along-moving-point", "working-stroke-quicker", "block-near-pivot",
+                                 "joints-coincide", "blocks-pass-through"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
