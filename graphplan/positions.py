@@ -627,6 +627,14 @@ def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tup
     return tuple(sorted(ranges))
 
 
+def turns_round(mechanism: Mechanism) -> bool:
+    """Whether a crank's mechanism assembles at every angle of :func:`reach`'s grid, as :func:`reach` then finds
+    :data:`FULL_TURN`: asked angle by angle up to the first that fails, with no range's ends bisected, for the
+    advice that tries lengths a digit off, most of which stop the crank (a triad's check took 7 s of its 9 there)."""
+    assembles = _assembles(mechanism, None)
+    return all(assembles(float(value)) for value in 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID)
+
+
 def travel_reach(mechanism: Mechanism, over: tuple[float, float] | None = None) -> tuple[tuple[float, float], ...]:
     """The ranges of a slider driver's typed travel (or of the coordinates ``over``; m, in the travel's own order)
     in which the mechanism assembles, found as :func:`reach` finds a crank's, on a grid of their 720th parts."""

@@ -21,7 +21,7 @@ from .groups.base import Group
 from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
 from .motion import Motion, reference_at, solve
-from .positions import FULL_TURN, first_value, reach, travel_reach
+from .positions import FULL_TURN, first_value, reach, travel_reach, turns_round
 from .rounding import noise_floor
 from .scene import Scene
 
@@ -157,7 +157,7 @@ def _slipped_digit(mechanism: Mechanism, label: str) -> str | None:
             for slip in _SLIPS:
                 other = replace(scene, groups=(*scene.groups[:n], changed(value * slip), *scene.groups[n + 1:]))
                 try:
-                    turns = reach(build(other)) == FULL_TURN
+                    turns = turns_round(build(other))
                 except GraphplanError:
                     continue
                 if turns:

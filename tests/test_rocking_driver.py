@@ -22,7 +22,8 @@ from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.errors import AssemblyError, SceneError
 from graphplan.kinematic_diagrams import of_analysis
-from graphplan.positions import reach
+from graphplan.mechanism import build
+from graphplan.positions import FULL_TURN, reach, turns_round
 from graphplan.scene import loads
 
 FIXTURE = "fixtures/double_rocker_swing.toml"
@@ -199,6 +200,17 @@ def test_a_reach_through_zero_starts_at_a_negative_angle(text):
 def test_a_crank_that_turns_round_reaches_the_whole_turn():
     mechanism = analyse(graphplan.load("fixtures/engine_slider_crank.toml")).mechanism
     assert reach(mechanism) == ((0.0, 2.0 * math.pi),)
+
+
+@pytest.mark.parametrize("crank", [0.01, 0.015, 0.05, 0.25, 0.35])
+def test_a_crank_turns_round_where_its_reach_is_the_whole_turn_and_the_four_bar_closes_all_round(text, crank):
+    """turns_round, which the advice of a length a digit off asks without finding a reach's ends, answers as reach
+    does, and as the four-bar's lengths do: A–C runs from |OC − OA| to OC + OA over the turn, and B closes all
+    round where that stays within |AB − CB| … AB + CB (here for OA up to 0.02 m)."""
+    mechanism = build(loads(changed(changed(text, r"^swing .*$", ""), r"^length *= 0\.25\b.*$",
+                                    f"length = {crank}")))
+    closes = abs(C) + crank <= AB + CB and abs(abs(C) - crank) >= abs(AB - CB)
+    assert turns_round(mechanism) is (reach(mechanism) == FULL_TURN) is closes
 
 
 def test_the_advice_gives_the_reach_and_a_swing_that_runs(text):
