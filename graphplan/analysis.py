@@ -14,7 +14,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .check import ErrorRow, Reading, analytic_values, balancing_error_rows, error_rows, force_error_rows, readings
+from .check import ErrorRow, Reading, balancing_error_rows, error_rows, exact_values_at, force_error_rows, readings
 from .cycle_work import CycleWork, cycle_work
 from .errors import SceneError
 from .forces import ForcePlan, Load, force_plan
@@ -229,7 +229,7 @@ def analyse(scene: Scene) -> Analysis:
                            locked_elsewhere=bool(with_friction.locked.any()) or bool(locked_spans))
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
-    warnings += misread(mechanism, (*plans, *every))
+    warnings += misread(mechanism, (*plans, *every), motion=motion, numbers=positions.numbers)
     in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism)
                             + masses_in_grams(mechanism, motion)
                             + inertia_too_large(mechanism, motion) + centres_as_shares(mechanism, motion)
@@ -261,7 +261,8 @@ def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
     if not sheets:
         return analysis
     sheets = MappingProxyType(dict(sheets))
-    told = iter(misread(analysis.mechanism, (*analysis.plans, *analysis.velocity_plans), sheets))
+    told = iter(misread(analysis.mechanism, (*analysis.plans, *analysis.velocity_plans), sheets,
+                        motion=analysis.motion, numbers=analysis.positions.numbers))
     # The polygons read off a sheet are found only among readings far off the record: the same positions are told,
     # in the same order.
     warnings = tuple(next(told) if warning.code == "measured-far-off" else warning for warning in analysis.warnings)
@@ -576,7 +577,7 @@ def _grid_rows(mechanism: Mechanism, motion: Motion, position: VelocityPosition,
                measured: Mapping[str, Mapping[str, float]] | None) -> tuple[ErrorRow, ...]:
     """The error rows of a velocity plan among the plans of every position, with those of hand readings of it."""
     table = list(position.readings)
-    return tuple(error_rows(position.number, _exact_values(mechanism, motion, table, position.index), position.plans,
+    return tuple(error_rows(position.number, exact_values_at(mechanism, motion, table, position.index), position.plans,
                             table, mechanism.scene.drawing.drafting_precision, measured))
 
 
@@ -590,14 +591,6 @@ def measured_on_velocity_plans(analysis: Analysis, number: int,
                  if row.source == "measured")
 
 
-def _exact_values(mechanism: Mechanism, motion: Motion, table: list[Reading], index: int) -> dict[str, float]:
-    """The analytic value at position ``index`` of every quantity ``table`` reads off the plans."""
-    return analytic_values(
-        mechanism, table,
-        {name: complex(at(p.v, index)) for name, p in motion.points.items()},
-        {name: complex(at(p.a, index)) for name, p in motion.points.items()},
-        {n: float(at(link.omega, index)) for n, link in motion.links.items()},
-        {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
 
 
 def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting: np.ndarray | None,
@@ -622,7 +615,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             continue
         plans = {"velocity": velocity, "acceleration": acceleration}
         table = readings(mechanism, plans, where)
-        exact = _exact_values(mechanism, motion, table, index)
+        exact = exact_values_at(mechanism, motion, table, index)
         measured = dict(scene.measured.get(number, {}))
         measured_forces = measured.pop("forces", None)
         # The balancing load found by hand (a value, N·m or N), checked as the force readings are.

@@ -20,13 +20,18 @@ import re
 import unicodedata
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 from .errors import SceneError
 from .forces import ForcePlan
+from .kinematics import at
 from .locale import load_symbol
 from .lookalikes import lookalike_hint, twin
 from .mechanism import Mechanism
 from .plans import LaidVector, Plan, Step
+
+if TYPE_CHECKING:
+    from .motion import Motion
 
 SOURCES = ("construction", "drafting", "measured")
 
@@ -638,6 +643,16 @@ def analytic_values(mechanism: Mechanism, table: list[Reading], velocities: Mapp
                 values[reading.quantity] = abs(source[rest])
     return values
 
+
+
+def exact_values_at(mechanism: Mechanism, motion: Motion, table: list[Reading], index: int) -> dict[str, float]:
+    """The analytic value at position ``index`` of ``motion`` of every quantity ``table`` reads off the plans."""
+    return analytic_values(
+        mechanism, table,
+        {name: complex(at(p.v, index)) for name, p in motion.points.items()},
+        {name: complex(at(p.a, index)) for name, p in motion.points.items()},
+        {n: float(at(link.omega, index)) for n, link in motion.links.items()},
+        {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
 
 
 def _relative_motion(pair: SlidingPair, velocities: Mapping[str, complex], accelerations: Mapping[str, complex],

@@ -16,14 +16,14 @@ from __future__ import annotations
 
 import math
 import statistics
-from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
-from .check import ErrorRow, is_balancing, is_reaction, quantity_symbol, segment_millimetres
+from .check import ErrorRow, exact_values_at, is_balancing, is_reaction, quantity_symbol, segment_millimetres
 from .locale import strings
-from .motion import PositionWarning
+from .motion import Motion, PositionWarning
 from .scales import nearest_standard_scale
 
 if TYPE_CHECKING:
@@ -691,11 +691,12 @@ def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[
             f"position {position.number} times {factor_text(rescaled)}")
 
 
-def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
-            sheets: SheetsDrawn | None = None) -> tuple[PositionWarning, ...]:
+def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: SheetsDrawn | None = None, *,
+            motion: Motion | None = None, numbers: Sequence[int] = ()) -> tuple[PositionWarning, ...]:
     """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans; ``sheets``
     the polygons the course sheets draw larger than the record, by position number, where the run drew them, and the
-    record's own arrows of the groups cut free (:class:`SheetPolygons` with no sheet)."""
+    record's own arrows of the groups cut free (:class:`SheetPolygons` with no sheet).  Given the ``motion`` of
+    every position and their ``numbers``, readings far off that fit another position are told which."""
     drawing = mechanism.scene.drawing
     precision = drawing.drafting_precision
     joint = mechanism.driver.joint
@@ -782,8 +783,13 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
                 f"{quantity_symbol(row.quantity)} = {row.plan + 0.0:.4g} against {plan + 0.0:.4g}, "
                 + (f"{abs(row.plan - plan) / abs(plan) * 100.0:.1f} % off" if plan else "where the plan has none")
                 for row, plan in rows) for reading, rows in found.misread.items())
+            elsewhere = None if motion is None else _fitting_position(mechanism, motion, numbers, position, precision)
+            question = "a length misread, or a segment taken for another?" if elsewhere is None else (
+                f"every reading of the plans fits position {elsewhere} instead (none far off its exact values): "
+                f"readings of position {elsewhere}'s plans, or of plans drawn with the positions counted or numbered "
+                f"otherwise (positions.count, start, number_from)?")
             details.append(f"readings more than {FAR_OFF_PERCENT:g} % and {FAR_OFF_PRECISIONS * precision:g} mm off "
-                           f"the plan as constructed ({readings}): a length misread, or a segment taken for another?")
+                           f"the plan as constructed ({readings}): {question}")
         for kind, (other, names) in found.other_plan.items():
             details.append(f"the readings given for the {kind} plan are the {other} plan's {', '.join(names)} (each to "
                            f"the drafting precision, {precision:g} mm): readings of the {other} plan typed under "
@@ -799,6 +805,32 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
+
+
+# The fewest readings of the plans that can tell one position from another: one speed is every position's where the
+# output link passes it (twice a turn), three agreeing at one position alone are not chance.
+_FEWEST_TELLING = 3
+
+
+def _fitting_position(mechanism: Mechanism, motion: Motion, numbers: Sequence[int], position: VelocityPosition,
+                      precision: float) -> int | None:
+    """The number of the one other position at whose exact motion none of ``position``'s hand readings of the plans
+    is far off (:func:`_far_off`, by magnitude: a reading gives ω's sense as its own plan is drawn), where there are
+    enough of them to tell (:data:`_FEWEST_TELLING`); None where none, or more than one, fits.  A student who drew
+    the plans of twelve positions and then set 24, or numbered them from 1 where the scene numbers from 0, gave
+    readings of one position under another's number."""
+    rows = [row for row in position.errors if row.source == "measured" and _plan_of(row) != "forces"]
+    if len(rows) < _FEWEST_TELLING:
+        return None
+    table = list(position.readings)
+    fitting = []
+    for index in range(motion.count):
+        if index == position.index:
+            continue
+        exact = exact_values_at(mechanism, motion, table, index)
+        if all(not _far_off(replace(row, plan=abs(row.plan)), abs(exact[row.quantity]), precision) for row in rows):
+            fitting.append(int(numbers[index]))
+    return fitting[0] if len(fitting) == 1 else None
 
 
 def reads_forces(position: VelocityPosition) -> bool:
