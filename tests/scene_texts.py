@@ -32,6 +32,24 @@ assembly = "forward"
 """
 
 
+def second_cylinder(radius: float, rod: float, from_opposite: bool, guide_deg: float = 0.0,
+                    assembly: str = "forward", opposite: str = "E") -> str:
+    """A second rod (link 5, ``rod``) and piston C (link 6) for :func:`central_slider_crank`'s crank of ``radius``:
+    from its pin A, or, ``from_opposite``, from its point ``opposite`` half a turn from A (named either way), to C on
+    a guide through O at ``guide_deg``.  The caller adds the loads and positions after it."""
+    return f"""
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["{opposite if from_opposite else 'A'}", "C"]
+length = {rod}
+guide = {{ through = "O", angle = {guide_deg} }}
+assembly = "{assembly}"
+[points]
+{opposite} = {{ link = 2, from = "O", toward = "A", at = {-radius} }}
+"""
+
+
 def slider_crank_with_masses(title: str, radius: float, rod: float, rpm: float, centres: tuple[float, float],
                              masses: tuple[float, float, float], inertias: tuple[float, float],
                              locale: str | None = None) -> str:

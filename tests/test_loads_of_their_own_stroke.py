@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 import pytest
-from scene_texts import central_slider_crank
+from scene_texts import central_slider_crank, second_cylinder
 
 import graphplan
 from graphplan.analysis import analyse
@@ -26,17 +26,7 @@ CRANK = central_slider_crank(RADIUS, ROD, OMEGA)
 
 
 def twin(second_pin_deg: float, second_guide_deg: float, stroke: str) -> str:
-    return CRANK + f"""
-[[groups]]
-kind = "RRP"
-links = [5, 6]
-joints = ["{'A' if second_pin_deg == 0 else 'E'}", "C"]
-length = {ROD}
-guide = {{ through = "O", angle = {second_guide_deg} }}
-assembly = "forward"
-[points]
-E = {{ link = 2, from = "O", toward = "A", at = {-RADIUS} }}
-[[loads]]
+    return CRANK + second_cylinder(RADIUS, ROD, second_pin_deg != 0, second_guide_deg) + f"""[[loads]]
 kind = "force"
 link = 4
 point = "B"

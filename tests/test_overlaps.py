@@ -8,7 +8,7 @@ import json
 import re
 
 import pytest
-from scene_texts import central_slider_crank
+from scene_texts import central_slider_crank, second_cylinder
 
 from graphplan.cli import main
 from graphplan.locale import strings
@@ -18,18 +18,9 @@ RADIUS, ROD = 0.05, 0.19
 
 
 def _second_piston(pin: str, assembly: str = "forward", angle: float = 0.0, rod: float = ROD) -> str:
-    """The central slider-crank with a second rod (link 5) from ``pin`` to a second piston C (link 6) on a guide
-    through O at ``angle``; a ``pin`` other than A is the crank's point half a turn from A."""
-    opposite = f'\n[points]\nD = {{ link = 2, from = "O", toward = "A", at = {-RADIUS} }}\n' if pin == "D" else ""
-    return central_slider_crank(RADIUS, ROD, 10.0) + f"""
-[[groups]]
-kind = "RRP"
-links = [5, 6]
-joints = ["{pin}", "C"]
-length = {rod}
-guide = {{ through = "O", angle = {angle} }}
-assembly = "{assembly}"
-""" + opposite
+    """The central slider-crank with a second rod (link 5) from ``pin`` (A, or D half a turn from it) to a second
+    piston C (link 6) on a guide through O at ``angle``."""
+    return central_slider_crank(RADIUS, ROD, 10.0) + second_cylinder(RADIUS, rod, pin == "D", angle, assembly, "D")
 
 
 def _codes(text: str) -> list[str]:
