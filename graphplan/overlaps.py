@@ -58,11 +58,14 @@ def blocks_passing_through(mechanism: Mechanism, paths: Motion) -> tuple[Positio
             continue  # one place throughout: told as joints that coincide
         if not (np.nanmin(ahead) < 0.0 < np.nanmax(ahead)):
             continue
-        crossing = int(np.flatnonzero(np.diff(np.sign(ahead)) != 0)[0]) + 1
+        sense = np.sign(ahead)
+        # Where the sweep has no position (a swing's), there is no crossing to tell: from one sample to the next.
+        changes = np.flatnonzero(np.isfinite(ahead[:-1]) & np.isfinite(ahead[1:]) & (sense[:-1] != sense[1:]))
+        crossing = int(changes[0]) + 1 if changes.size else int(np.nanargmin(np.abs(ahead)))
         told.append(PositionWarning(0, "blocks-pass-through", (
             f"the blocks at {first.joint} (link {first.slider}) and {second.joint} (link {second.slider}) slide on one "
             f"line of the frame and pass through each other ({mechanism.driver.describe(float(paths.driver[crossing]))}"
-            f"): their order along the line changes over the turn, which no machine's blocks do; give each its own "
+            f"): their order along the line changes over the cycle, which no machine's blocks do; give each its own "
             f"line (a twin's second cylinder at its own angle)")))
     return tuple(told)
 
