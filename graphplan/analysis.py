@@ -54,7 +54,7 @@ from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import OTHER_SENSE, LoadSpec, Scene
 from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
-from .unit_slips import centres_as_shares, inertia_too_large, masses_in_grams, speed_in_rpm
+from .unit_slips import angles_in_radians, centres_as_shares, inertia_too_large, masses_in_grams, speed_in_rpm
 from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
@@ -230,7 +230,7 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every), motion=motion, numbers=positions.numbers)
-    in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism)
+    in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism) + angles_in_radians(mechanism)
                             + masses_in_grams(mechanism, motion)
                             + inertia_too_large(mechanism, motion) + centres_as_shares(mechanism, motion)
                             + motion.warnings + stepped_over
@@ -278,7 +278,7 @@ SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-th
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
                                  "inertia-too-large", "centre-as-share", "resisting-turns-round",
                                  "along-moving-point", "working-stroke-quicker", "block-near-pivot",
-                                 "joints-coincide", "blocks-pass-through"})
+                                 "joints-coincide", "blocks-pass-through", "angle-in-radians"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

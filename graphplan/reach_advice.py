@@ -24,6 +24,7 @@ from .motion import Motion, reference_at, solve
 from .positions import FULL_TURN, first_value, reach, travel_reach, turns_round
 from .rounding import noise_floor
 from .scene import Scene
+from .unit_slips import angles_in_radians
 
 # Set while _swing_that_runs tries the scene rocking over a swing: a trial's refusal only says to try the next
 # swing, and its words are dropped, so the reach and advice a refusal is told with are not worked out for it (they
@@ -60,6 +61,9 @@ def _advised(mechanism: Mechanism, error: AssemblyError, first: float | None,
     # A length in millimetres among metres: the reach and the swing it allows would be advice about a typo.
     if (units := mixed_units(mechanism)) is not None:
         return told(units)
+    # So would be a swing or a guide's angle typed in radians: [0.5236, 1.0472] rocks the crank where it cannot go.
+    if slips := angles_in_radians(mechanism, loads=False):
+        return told("; ".join(slip.detail for slip in slips))
     driver = mechanism.driver
     stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
                     Group.reach_ends)

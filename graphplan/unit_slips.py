@@ -8,6 +8,7 @@ what was likely meant, as it warns of lengths in millimetres (:mod:`graphplan.le
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 from .mechanism import Mechanism
 from .motion import Motion, PositionWarning
@@ -63,6 +64,46 @@ def heaviest_bar(length: float) -> float:
     """The most a link of ``length`` (m) between its joints weighs, kg: a solid steel bar as thick and as wide as it
     is long, but at least :data:`THINNEST_SECTION_M` and at most :data:`THICKEST_SECTION_M` square."""
     return STEEL_DENSITY * length * min(max(length, THINNEST_SECTION_M), THICKEST_SECTION_M) ** 2
+
+
+# An angle typed in radians where the scene asks degrees is a small angle: 1.5708 for 90°, a guide laid along x where it
+# was meant to stand across.  Those within this of a whole number of twelfths of π (15°, the angles a course's
+# drawings are laid off at), and no whole degree, are told: no drawing lays a line off at 1.571°.
+RADIAN_SLIP = 0.002
+
+
+def angles_in_radians(mechanism: Mechanism, loads: bool = True) -> tuple[PositionWarning, ...]:
+    """An ``angle-in-radians`` warning, at the first position, for each angle of the linkage that reads as typed in
+    radians (:data:`RADIAN_SLIP`): a guide's or a frame line's, the swing's ends, the first position's angle, and
+    with ``loads`` a load's direction (which places nothing: no reason a mechanism cannot be assembled)."""
+    scene = mechanism.scene
+    guides = [*scene.frame_lines.values(), *(guide for unit in mechanism.units for guide in unit.solver.guides())]
+    given = [(f"{guide.where}.angle", math.degrees(guide.angle)) for guide in guides
+             if guide.line is None and guide.angle_given]
+    given += [(f"{load.where}.angle", load.angle_deg) for load in scene.loads if loads and load.angle_deg is not None]
+    # A slider driver's run is in metres: only a crank's start and swing are angles.
+    driver = mechanism.driver
+    if driver.kind == "crank" and not isinstance(scene.positions.start, str):
+        given.append(("positions.start", scene.positions.start))
+    if driver.kind == "crank" and driver.swing is not None:
+        given += [(f"{driver.where}.swing[{k}]", math.degrees(end)) for k, end in enumerate(driver.swing)]
+    told = []
+    for where, degrees in given:
+        twelfths = round(degrees / (math.pi / 12.0))
+        if twelfths and degrees != round(degrees) and abs(degrees - twelfths * math.pi / 12.0) <= RADIAN_SLIP:
+            meant = twelfths * 15
+            told.append(PositionWarning(0, "angle-in-radians", (
+                f"{where} = {degrees:.6g} is {_of_pi(twelfths)} in radians: the scene's angles are in degrees, so it "
+                f"is taken as {degrees:.6g}°; give {meant} if {meant}° is meant")))
+    return tuple(told)
+
+
+def _of_pi(twelfths: int) -> str:
+    """``twelfths`` twelfths of π written as a fraction of π: π/2, 3π/4, −π."""
+    share = Fraction(twelfths, 12)
+    top = "" if abs(share.numerator) == 1 else str(abs(share.numerator))
+    sign = "−" if share < 0 else ""
+    return f"{sign}{top}π" + (f"/{share.denominator}" if share.denominator != 1 else "")
 
 
 def speed_in_rpm(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
