@@ -591,8 +591,6 @@ def measured_on_velocity_plans(analysis: Analysis, number: int,
                  if row.source == "measured")
 
 
-
-
 def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting: np.ndarray | None,
            friction: tuple[FrictionPair, ...], balance: Equilibrium | None):
     """Plans, readings, errors and forces for every position of ``positions.plans``; singular ones are reported.

@@ -644,7 +644,6 @@ def analytic_values(mechanism: Mechanism, table: list[Reading], velocities: Mapp
     return values
 
 
-
 def exact_values_at(mechanism: Mechanism, motion: Motion, table: list[Reading], index: int) -> dict[str, float]:
     """The analytic value at position ``index`` of ``motion`` of every quantity ``table`` reads off the plans."""
     return analytic_values(
