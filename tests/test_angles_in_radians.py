@@ -42,6 +42,14 @@ def test_an_angle_typed_in_radians_is_told_with_the_degrees_meant(text, old, key
                       f"{typed:g}°; give {meant} if {meant}° is meant")
 
 
+def test_an_rpp_s_slot_angle_typed_in_radians_is_told():
+    """The scotch yoke's slot at 1.5708 to its guide: a slot nearly along the guide, its block thrown far along it."""
+    yoke = Path("fixtures/scotch_yoke.toml").read_text(encoding="utf-8")
+    told = _told(_edited(yoke, "angle  = 90.0                             #", "angle  = 1.5708   #"))
+    assert told == ["groups[0].angle = 1.5708 is π/2 in radians: the scene's angles are in degrees, so it is taken as "
+                    "1.5708°; give 90 if 90° is meant"]
+
+
 def test_both_ends_of_a_swing_typed_in_radians_are_told():
     """The engine's crank swung over [0.5236, 1.0472]: half a degree, which it can, so the run goes on, told."""
     swinging = _edited(_edited(ENGINE, "epsilon = 0.0\n", "epsilon = 0.0\nswing = [0.5236, 1.0472]\n"),
