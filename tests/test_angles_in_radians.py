@@ -46,8 +46,8 @@ def test_an_rpp_s_slot_angle_typed_in_radians_is_told():
     """The scotch yoke's slot at 1.5708 to its guide: a slot nearly along the guide, its block thrown far along it."""
     yoke = Path("fixtures/scotch_yoke.toml").read_text(encoding="utf-8")
     told = _told(_edited(yoke, "angle  = 90.0                             #", "angle  = 1.5708   #"))
-    assert told == ["groups[0].angle = 1.5708 is π/2 in radians: the scene's angles are in degrees, so it is taken as "
-                    "1.5708°; give 90 if 90° is meant"]
+    assert told == [("groups[0].angle = 1.5708 is π/2 in radians: the scene's angles are in degrees, so it is taken "
+                     "as 1.5708°; give 90 if 90° is meant")]
 
 
 def test_both_ends_of_a_swing_typed_in_radians_are_told():
