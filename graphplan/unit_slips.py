@@ -92,7 +92,9 @@ def angles_in_radians(mechanism: Mechanism, loads: bool = True) -> tuple[Positio
     told = []
     for where, degrees in given:
         twelfths = round(degrees / (math.pi / 12.0))
-        if twelfths and degrees != round(degrees) and abs(degrees - twelfths * math.pi / 12.0) <= RADIAN_SLIP:
+        # Within a turn either way, as an angle in radians is typed: 47.124° is no 15π.
+        if 0 < abs(twelfths) <= 24 and degrees != round(degrees) and \
+                abs(degrees - twelfths * math.pi / 12.0) <= RADIAN_SLIP:
             meant = twelfths * 15
             told.append(PositionWarning(0, "angle-in-radians", (
                 f"{where} = {degrees:.6g} is {_of_pi(twelfths)} in radians: the scene's angles are in degrees, so it "

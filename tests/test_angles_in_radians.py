@@ -72,9 +72,11 @@ def test_a_swing_in_radians_the_mechanism_cannot_reach_is_refused_with_the_degre
     assert len(loads(_edited(ROCKER, "swing   = [20.0, 65.0]", "swing   = [30.0, 60.0]")).analyse().positions.numbers)
 
 
-@pytest.mark.parametrize("angle", ["90.0", "3.0", "1.2", "0.0"], ids=["degrees", "a whole degree", "no π", "zero"])
+@pytest.mark.parametrize("angle", ["90.0", "3.0", "1.2", "0.0", "47.124"],
+                         ids=["degrees", "a whole degree", "no π", "zero", "beyond a turn in radians"])
 def test_an_angle_in_degrees_is_not_told(angle):
-    """3° is a whole degree a drawing is laid off at; 1.2 is no fraction of π a course's angle would be."""
+    """3° is a whole degree a drawing is laid off at; 1.2 is no fraction of π a course's angle would be; 47.124° is
+    15π to three decimals, but no angle typed in radians runs past a turn."""
     assert not _told(_edited(ENGINE, 'guide    = { through = "O", angle = 0.0 }',
                              f'guide    = {{ through = "O", angle = {angle} }}'))
 
