@@ -346,9 +346,7 @@ def frame_anchors(mechanism: Mechanism) -> list[tuple[str, complex]]:
     """Where the frame holds the mechanism: each frame point and each frame guide's point given by its
     coordinates, with its key (``frame.points.C``, ``groups[0].guide.through``)."""
     anchors = [(f"frame.points.{name}", point) for name, point in mechanism.scene.frame_points.items()]
-    solvers = [mechanism.driver, *mechanism.groups]
-    guides = [*mechanism.scene.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
-    return anchors + [(f"{guide.where}.through", complex(*guide.through)) for guide in guides
+    return anchors + [(f"{guide.where}.through", complex(*guide.through)) for guide in mechanism.scene.guides
                       if guide.on_frame and isinstance(guide.through, tuple)]
 
 
@@ -359,10 +357,8 @@ def _frame_guides(mechanism: Mechanism) -> list[tuple[str, tuple[float, float], 
     if not points:
         return []
     first, origin = points[0]
-    solvers = [mechanism.driver, *mechanism.groups]
-    guides = [*mechanism.scene.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
     found = []
-    for guide in guides:
+    for guide in mechanism.scene.guides:
         if guide.on_frame and isinstance(guide.through, tuple):
             apart = abs(complex(*guide.through) - origin)
             if apart > 0:

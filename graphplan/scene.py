@@ -250,6 +250,12 @@ class Scene:
         return f"<Scene {self.title!r} from {self.source}: {', '.join(parts) or 'nothing to work out'}>"
 
     @property
+    def guides(self) -> list[Guide]:
+        """Every guide the scene writes: its frame lines, then the driver's and each group's, in the scene's order."""
+        solvers = [solver for solver in (self.driver, *self.groups) if solver is not None]
+        return [*self.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
+
+    @property
     def own_words(self) -> tuple[str, ...]:
         """What a drawing quotes as written, never put into its language: the title and the loads' names (a link's
         second load F4.2 is no decimal number, to be written F4,2 in Russian)."""
@@ -524,10 +530,8 @@ def _other_format(data: str) -> str:
 def guides_without_angle(scene: Scene) -> list[str]:
     """A line for each guide whose ``angle`` the scene left out: it then runs at 0° (along +x on the frame, along its
     link's reference line on a moving link), which a forgotten angle makes another mechanism of without a word."""
-    solvers = [solver for solver in (scene.driver, *scene.groups) if solver is not None]
-    guides = [*scene.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
     told = []
-    for guide in guides:
+    for guide in scene.guides:
         if guide.line is not None or guide.angle_given:
             continue
         along = "+x" if guide.link in (None, scene.frame_link) else f"link {guide.link}'s reference line"

@@ -77,8 +77,7 @@ def angles_in_radians(mechanism: Mechanism, loads: bool = True) -> tuple[Positio
     radians (:data:`RADIAN_SLIP`): a guide's or a frame line's, an RPP's slot's, the swing's ends, the first position's
     angle, and with ``loads`` a load's direction (which places nothing: no reason a mechanism cannot be assembled)."""
     scene = mechanism.scene
-    guides = [*scene.frame_lines.values(), *(guide for unit in mechanism.units for guide in unit.solver.guides())]
-    given = [(f"{guide.where}.angle", math.degrees(guide.angle)) for guide in guides
+    given = [(f"{guide.where}.angle", math.degrees(guide.angle)) for guide in scene.guides
              if guide.line is None and guide.angle_given]
     # An RPP's slot to its guide: 90° unless given, 1.5708 where typed in radians.
     given += [(f"{group.where}.angle", math.degrees(group.angle)) for group in mechanism.groups if group.kind == "RPP"]
