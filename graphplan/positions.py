@@ -614,8 +614,7 @@ def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tup
     one range (0, 2π); one that assembles nowhere has none.  ``reference``: the assemblies a solve took
     elsewhere (from the first of the values a caller gave).
     """
-    grid = 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
-    found = _assembled_ranges(_assembles(mechanism, reference), grid, wraps=True, tolerance=1e-9)
+    found = _assembled_ranges(_assembles(mechanism, reference), _turn_grid(), wraps=True, tolerance=1e-9)
     if found is None:
         return FULL_TURN
     ranges = []
@@ -632,7 +631,12 @@ def turns_round(mechanism: Mechanism) -> bool:
     :data:`FULL_TURN`: asked angle by angle up to the first that fails, with no range's ends bisected, for the
     advice that tries lengths a digit off, most of which stop the crank (a triad's check took 7 s of its 9 there)."""
     assembles = _assembles(mechanism, None)
-    return all(assembles(float(value)) for value in 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID)
+    return all(assembles(float(value)) for value in _turn_grid())
+
+
+def _turn_grid() -> np.ndarray:
+    """The crank angles (rad) :func:`reach` and :func:`turns_round` ask, round the turn from 0."""
+    return 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
 
 
 def travel_reach(mechanism: Mechanism, over: tuple[float, float] | None = None) -> tuple[tuple[float, float], ...]:
