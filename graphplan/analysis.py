@@ -47,7 +47,7 @@ from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_b
 from .mechanism import Mechanism, build
 from .misreadings import SheetsDrawn, misread
 from .motion import ILL_CONDITIONED_DEG, ILL_CONDITIONED_SINE, Motion, PositionWarning, solve, toggles_between
-from .overlaps import blocks_passing_through, coinciding_joints
+from .overlaps import overlaps
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
@@ -237,7 +237,7 @@ def analyse(scene: Scene) -> Analysis:
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
                             + _working_stroke_quicker(mechanism, positions) + _block_near_pivot(mechanism, paths)
-                            + coinciding_joints(mechanism, paths) + blocks_passing_through(mechanism, paths)
+                            + overlaps(mechanism, paths)
                             + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + resisting_forces_turning(mechanism, positions, motion)

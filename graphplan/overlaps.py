@@ -20,11 +20,17 @@ from .motion import Motion, PositionWarning
 SAME_PLACE = 1e-6
 
 
-def coinciding_joints(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarning, ...]:
-    """A ``joints-coincide`` warning for each two joints the groups find that stand at one place at every position of
-    ``paths`` (the plan of positions' sweep), naming the groups that found them."""
-    found = {joint: group for group in mechanism.groups for joint in group.new_joints()}
+def overlaps(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarning, ...]:
+    """The warnings of parts that stand on one another over ``paths`` (the plan of positions' sweep): joints that
+    coincide throughout, then blocks that pass through each other, each measured against the mechanism's size."""
     size = _size(paths)
+    return _coinciding_joints(mechanism, paths, size) + _blocks_passing_through(mechanism, paths, size)
+
+
+def _coinciding_joints(mechanism: Mechanism, paths: Motion, size: float) -> tuple[PositionWarning, ...]:
+    """A ``joints-coincide`` warning for each two joints the groups find that stand at one place at every position of
+    ``paths``, naming the groups that found them."""
+    found = {joint: group for group in mechanism.groups for joint in group.new_joints()}
     told = []
     for (first, first_group), (second, second_group) in itertools.combinations(found.items(), 2):
         gap = np.hypot(*(paths.point(first).r - paths.point(second).r).T)
@@ -39,12 +45,11 @@ def coinciding_joints(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarn
     return tuple(told)
 
 
-def blocks_passing_through(mechanism: Mechanism, paths: Motion) -> tuple[PositionWarning, ...]:
+def _blocks_passing_through(mechanism: Mechanism, paths: Motion, size: float) -> tuple[PositionWarning, ...]:
     """A ``blocks-pass-through`` warning for each two blocks sliding on one line of the frame whose order along it
     changes over the sweep ``paths``: they run through each other where their places along the line cross."""
     frame = mechanism.scene.frame_link
     slides = [slide for slide in paths.slides if slide.guide == frame]
-    size = _size(paths)
     told = []
     for first, second in itertools.combinations(slides, 2):
         along = np.asarray(first.u, dtype=complex) * np.ones(paths.count)
