@@ -74,13 +74,17 @@ RADIAN_SLIP = 0.002
 
 def angles_in_radians(mechanism: Mechanism, loads: bool = True) -> tuple[PositionWarning, ...]:
     """An ``angle-in-radians`` warning, at the first position, for each angle of the linkage that reads as typed in
-    radians (:data:`RADIAN_SLIP`): a guide's or a frame line's, an RPP's slot's, the swing's ends, the first position's
-    angle, and with ``loads`` a load's direction (which places nothing: no reason a mechanism cannot be assembled)."""
+    radians (:data:`RADIAN_SLIP`): a guide's or a frame line's, an RPP's or a triad's slot's, the swing's ends, the
+    first position's angle, and with ``loads`` a load's direction (which places nothing: no reason a mechanism cannot
+    be assembled)."""
     scene = mechanism.scene
     given = [(f"{guide.where}.angle", math.degrees(guide.angle)) for guide in scene.guides
              if guide.line is None and guide.angle_given]
     # An RPP's slot to its guide: 90° unless given, 1.5708 where typed in radians.
     given += [(f"{group.where}.angle", math.degrees(group.angle)) for group in mechanism.groups if group.kind == "RPP"]
+    # A triad's slot to the ternary link's BD: 0° unless given.
+    given += [(f"{group.slot(leg).where}.angle", math.degrees(group.leg_slots[leg]))
+              for group in mechanism.groups if group.kind == "triad" for leg in group.slotted_legs]
     given += [(f"{load.where}.angle", load.angle_deg) for load in scene.loads if loads and load.angle_deg is not None]
     # A slider driver's run is in metres: only a crank's start and swing are angles.
     driver = mechanism.driver

@@ -9,6 +9,7 @@ import math
 from pathlib import Path
 
 import pytest
+from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET, _hung_on_the_ratchet
 
 from graphplan.errors import AssemblyError
 from graphplan.scene import loads
@@ -48,6 +49,18 @@ def test_an_rpp_s_slot_angle_typed_in_radians_is_told():
     told = _told(_edited(yoke, "angle  = 90.0                             #", "angle  = 1.5708   #"))
     assert told == [("groups[0].angle = 1.5708 is π/2 in radians: the scene's angles are in degrees, so it is taken "
                      "as 1.5708°; give 90 if 90° is meant")]
+
+
+def test_a_triad_s_slot_angle_typed_in_radians_is_told():
+    """A triad's slot at 2.0944 to the ternary link's BD for 120°: the block slides in another slot, which the
+    ratchet's triad assembles in too, so nothing else stops it."""
+    group = _HUNG_ON_THE_RATCHET["ratchet+triad-slot"]
+    slotted = _hung_on_the_ratchet(_edited(group, "slots = { G = { angle = -77.0 } }", "slots = { G = { angle = 2.0944 } }"))
+    told = [warning.detail for warning in slotted().analyse().warnings if warning.code == "angle-in-radians"]
+    assert told == [("groups[1].slots.G.angle = 2.0944 is 2π/3 in radians: the scene's angles are in degrees, so it is "
+                     "taken as 2.0944°; give 120 if 120° is meant")]
+    assert not [warning for warning in _hung_on_the_ratchet(group)().analyse().warnings
+                if warning.code == "angle-in-radians"]
 
 
 def test_both_ends_of_a_swing_typed_in_radians_are_told():
