@@ -118,6 +118,8 @@ def keys_setting(mechanism: Mechanism, label: str) -> list[tuple[str, str]]:
     found: dict[str, str] = {}
     for key in _GROUP_LENGTH_KEYS:
         value = getattr(group, key, None)
+        if key == "lengths" and value is not None:  # as written: a triad's lists its turning legs only
+            value = [length for length in value if length]
         # An offset left at nought is none the scene set; a length always is.
         if value is not None and (key not in ("offset", "offsets") or any(np.atleast_1d(value))):
             found[f"{group.where}.{key}"] = f"{group.where}.{key} = {as_written(value)}"
@@ -171,14 +173,13 @@ def _slipped_digit(mechanism: Mechanism, label: str) -> str | None:
 
 def _lengths_of(group: Group) -> Iterator[tuple[str, float, Callable[[float], Group]]]:
     """Each length the group's table gives, with its key and a maker of the group with it changed: its ``length``,
-    and its ``lengths`` where none is left out (a triad's list only its turning legs, at other indices)."""
+    and its ``lengths`` (a triad's list its turning legs only, its sliding legs' 0 left out, as written)."""
     if getattr(group, "length", 0.0):
         yield f"{group.where}.length", group.length, lambda value: replace(group, length=value)
     lengths = getattr(group, "lengths", ())
-    if lengths and all(lengths):
-        for k, length in enumerate(lengths):
-            yield (f"{group.where}.lengths[{k}]", length,
-                   lambda value, k=k: replace(group, lengths=(*lengths[:k], value, *lengths[k + 1:])))
+    for k, n in enumerate(n for n, length in enumerate(lengths) if length):
+        yield (f"{group.where}.lengths[{k}]", lengths[n],
+               lambda value, n=n: replace(group, lengths=(*lengths[:n], value, *lengths[n + 1:])))
 
 
 # A hundredth of a degree: the farthest or nearest a group reads off the sweep of the crank is then the true one to

@@ -46,6 +46,7 @@ from ..geometry import Line, cross_lines
 from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy, radians_within_a_turn
+from ..rounding import figures_above, figures_below
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
 from .sliding import (
@@ -57,6 +58,7 @@ from .sliding import (
     record_slide,
     velocity_on_guide,
 )
+from .triad_legs import leg_reaches
 
 # Samples of a turning leg's circle at the reference position: two assemblies closer than a 2048th of a
 # turn would be missed, and such a triad is at a singular position anyway.
@@ -289,6 +291,36 @@ class Triad(Group):
         assert angle is not None, f"the leg {leg} has no slot"
         return complex(math.cos(angle), math.sin(angle))
 
+    def turning_round(self, before) -> str | None:
+        """Each turning leg's lengths that close the triad at every angle of the turn ``before`` it, the other legs as
+        given (:func:`~graphplan.groups.triad_legs.leg_reaches`); None where the lengths given do: then it is the
+        assembly followed that folds, which no one leg's length explains."""
+        reaches = leg_reaches(self, before)
+        if all(reach.nearest is not None and reach.nearest <= self.lengths[reach.leg] <= (reach.farthest or math.inf)
+               for reach in reaches):
+            return None
+        ranges, none = [], []
+        for reach in reaches:
+            outer, inner, _ = self.arms()[reach.leg]
+            key = f"{self.where}.lengths[{self.turning_legs.index(reach.leg)}] ({outer}{inner})"
+            if reach.nearest is not None:
+                low = figures_above(reach.nearest)
+                if reach.farthest is None:
+                    ranges.append(f"{key} from {low:.6g} m up")
+                    continue
+                if low < (high := figures_below(reach.farthest)):
+                    ranges.append(f"{key} from {low:.6g} m to {high:.6g} m")
+                    continue
+            if reach.shut_at is not None:
+                others = " and ".join(f"{o}{i}" for n, (o, i, _) in enumerate(self.arms()) if n != reach.leg)
+                none.append(f"no length of {outer}{inner} alone does: at "
+                            f"{before.mechanism.driver.describe(reach.shut_at)} {others} close at no turn of link "
+                            f"{self.ternary}")
+            else:
+                none.append(f"no length of {outer}{inner} alone does")
+        told = [f"the triad closes at every angle of the turn, the other legs as given, only with {', or '.join(ranges)}"]
+        return "; ".join(told + none if ranges else none)
+
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
         a, b, c, d, e, f = self.joints
         la, lb, lc, lt = self.links
@@ -421,6 +453,14 @@ class Triad(Group):
                                         if name == self.inner_joints[2] else (name, point)
                                         for name, point in self.near))
 
+    @property
+    def sketched_turn(self) -> int:
+        """Which way the ternary link's corners B, D, F run in the scene's sketch: 1 counter-clockwise, −1 not.  A
+        rigid triangle keeps its way round at every position."""
+        near = dict(self.near)
+        b, d, f = (near[name] for name in self.inner_joints)
+        return 1 if ((d - b).conjugate() * (f - b)).imag > 0 else -1
+
     def with_branch(self, context: Context) -> TriadBranch:
         """The assembly nearest the sketch, its triangle turning the way the sketch's does.
 
@@ -430,7 +470,7 @@ class Triad(Group):
         tracks = self._tracks_at(context, 0)
         near = dict(self.near)
         sketch = [near[name] for name in self.inner_joints]
-        turn = 1 if ((sketch[1] - sketch[0]).conjugate() * (sketch[2] - sketch[0])).imag > 0 else -1
+        turn = self.sketched_turn
         candidates = self.assemblies(tracks, turn)
         from_sketch = self._settle(Pose(sketch[0], math.atan2(*reversed(_xy(sketch[1] - sketch[0])))), tracks, turn)
         if from_sketch is not None:

@@ -1,0 +1,131 @@
+"""How long a triad's turning leg may be for the crank to turn round: the nearest and the farthest its inner joint can
+be from its outer joint with the other two legs as given, at every angle of the turn.
+
+Left without one leg, the ternary link keeps one freedom: turned to ψ, each of the other two legs holds B on a circle
+or a line (its track carried back by B's side to its corner, as :meth:`Triad.assemblies` turns the link round), B is
+where the two meet, and the free leg's corner follows.  Its distance from its outer joint over every ψ, at each angle
+of the crank, gives the lengths that close the triad there; a length closes it all round only between the largest
+nearest and the least farthest.  That is needed, not enough: the assembly the scene follows may still fold where
+the distance has an extreme of its own between them, which a student is told of as the reach's ends.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+# The turn sampled first, then again about the angle that binds, as finely as the motion before the group was solved
+# (``before``, every hundredth of a degree): a bound off by a sample would round to another fourth figure.
+_COARSE_ANGLES = 180
+_FINE_WINDOW = 40
+# The ternary link's turns sampled at each angle, then at the binding angle and its neighbours _FINE_TURNS times as
+# finely: near where two legs' tracks just touch, the corner runs as √ψ, and a coarse sweep steps far along it there.
+_TURNS = 1024
+_FINE_TURNS = 64
+# A free leg whose corner can run off more than this many times the triad's size (a slider's guide and a slot run
+# parallel) has no upper bound to give.
+_UNBOUNDED = 100.0
+
+
+@dataclass(frozen=True)
+class LegReach:
+    """The lengths of one turning leg that close the triad at every angle of the turn, the others as given: from
+    ``nearest`` to ``farthest`` (m; ``farthest`` None where no length is too long); or none, ``nearest`` None, where
+    at the crank's angle ``shut_at`` (rad) the other two legs close at no turn of the ternary link, whatever this
+    one's length."""
+
+    leg: int
+    nearest: float | None
+    farthest: float | None
+    shut_at: float | None = None
+
+
+def leg_reaches(triad, before) -> tuple[LegReach, ...]:
+    """Each turning leg's :class:`LegReach` over ``before``, the motion of the groups before the triad over the
+    whole turn, in the scene's assembly; the ternary link's corners run the way the scene's sketch has them."""
+    tracks = _tracks(triad, before)
+    local = triad.local_corners(triad.sketched_turn)
+    count = len(before.driver)
+    coarse = np.unique(np.linspace(0, count - 1, _COARSE_ANGLES + 1).round().astype(int))
+    turns = np.linspace(0.0, 2.0 * math.pi, _TURNS + 1)
+    reaches = []
+    for leg in triad.turning_legs:
+        nearest, farthest = _distances(tracks, local, leg, coarse, turns)
+        if not np.all(np.isfinite(nearest)):
+            shut = coarse[np.argmin(np.isfinite(nearest))]
+            reaches.append(LegReach(leg, None, None, shut_at=float(before.driver[shut])))
+            continue
+        low = _refined(tracks, local, leg, coarse, _bound(nearest, farthest, -1), -1)
+        high = _refined(tracks, local, leg, coarse, _bound(nearest, farthest, 1), 1)
+        reaches.append(LegReach(leg, low, None if high > _UNBOUNDED * triad.size else high))
+    return tuple(reaches)
+
+
+def _refined(tracks, local, leg: int, coarse: np.ndarray, binding: int, side: int) -> float:
+    """The bound that binds near the coarse angle ``binding`` (the largest nearest, ``side`` −1, or the least
+    farthest, 1): the angle found again among the motion's samples about it, then the link's turns swept finely
+    there and at its neighbours."""
+    start = coarse[max(binding - 1, 0)]
+    stop = coarse[min(binding + 1, len(coarse) - 1)]
+    angles = np.unique(np.linspace(start, stop, 2 * _FINE_WINDOW + 1).round().astype(int))
+    bound = _bound(*_distances(tracks, local, leg, angles, np.linspace(0.0, 2.0 * math.pi, _TURNS + 1)), side)
+    angles = angles[max(bound - 1, 0):bound + 2]
+    fine = np.linspace(0.0, 2.0 * math.pi, _TURNS * _FINE_TURNS + 1)
+    distances = _distances(tracks, local, leg, angles, fine)
+    return float(distances[side > 0][_bound(*distances, side)])
+
+
+def _bound(nearest: np.ndarray, farthest: np.ndarray, side: int) -> int:
+    """Where the largest nearest (``side`` −1) or the least farthest (1) is."""
+    return int(np.nanargmax(nearest)) if side < 0 else int(np.nanargmin(farthest))
+
+
+def _distances(tracks, local, leg: int, angles: np.ndarray, turns: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The nearest and farthest (m) the free ``leg``'s corner comes to its outer joint over the ternary link's
+    ``turns`` (rad), at each of the crank's samples ``angles``; NaN where the other two legs close at no turn."""
+    from .triad import Track, _carried_back, _meet  # the triad's own geometry, which imports this module
+
+    held = [n for n in range(3) if n != leg]
+    nearest = np.empty(len(angles))
+    farthest = np.empty(len(angles))
+    # A few thousand angle-by-turn samples at a time: the whole grid of a fine sweep would take a gigabyte.
+    rows = max(1, 2_000_000 // len(turns))
+    rotation = np.exp(1j * turns)[None, :]
+    for first in range(0, len(angles), rows):
+        taken = angles[first:first + rows]
+        shaped = [Track(np.asarray(track.centre)[taken, None], track.radius,
+                        None if track.u is None else np.asarray(track.u)[taken, None], track.slot) for track in tracks]
+        spans = []
+        for sign in (1, -1):
+            one, other = (_carried_back(shaped[n], local[n] * rotation, rotation) for n in held)
+            with np.errstate(invalid="ignore"):
+                b = _meet(one, other, sign)
+            spans.append(np.abs(b + local[leg] * rotation - shaped[leg].centre))
+        both = np.concatenate(spans, axis=1)
+        finite = np.isfinite(both)
+        closes = finite.any(axis=1)
+        nearest[first:first + rows] = np.where(closes, np.min(np.where(finite, both, np.inf), axis=1), np.nan)
+        farthest[first:first + rows] = np.where(closes, np.max(np.where(finite, both, -np.inf), axis=1), np.nan)
+    return nearest, farthest
+
+
+def _tracks(triad, before) -> tuple:
+    """Each leg's track over ``before``'s samples."""
+    from .triad import Track
+
+    count = len(before.driver)
+    tracks = []
+    for n, (outer, _, _) in enumerate(triad.arms()):
+        centre = np.broadcast_to(before.points[outer].r, (count,))
+        if n in triad.turning_legs:
+            tracks.append(Track(centre, triad.lengths[n]))
+        elif triad.leg_slots[n] is not None:
+            tracks.append(Track(centre, slot=triad.slot_direction(n)))
+        else:
+            tracks.append(Track(centre, u=np.broadcast_to(before.guide(triad.leg_guides[n]).u, (count,))))
+    return tuple(tracks)
+
+
+__all__ = ["LegReach", "leg_reaches"]
