@@ -54,7 +54,14 @@ from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import OTHER_SENSE, LoadSpec, Scene
 from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
-from .unit_slips import angles_in_radians, centres_as_shares, inertia_too_large, masses_in_grams, speed_in_rpm
+from .unit_slips import (
+    angles_in_radians,
+    centres_as_shares,
+    inertia_too_large,
+    loads_in_kilonewtons,
+    masses_in_grams,
+    speed_in_rpm,
+)
 from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
@@ -230,9 +237,11 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every), motion=motion, numbers=positions.numbers)
+    # A load judged against masses typed in grams would be told a slip of its own it is not.
+    mass_slips = masses_in_grams(mechanism, motion) + inertia_too_large(mechanism, motion)
     in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism) + angles_in_radians(mechanism)
-                            + masses_in_grams(mechanism, motion)
-                            + inertia_too_large(mechanism, motion) + centres_as_shares(mechanism, motion)
+                            + mass_slips + centres_as_shares(mechanism, motion)
+                            + (() if mass_slips else loads_in_kilonewtons(mechanism, motion))
                             + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
@@ -278,7 +287,7 @@ SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-th
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
                                  "inertia-too-large", "centre-as-share", "resisting-turns-round",
                                  "along-moving-point", "working-stroke-quicker", "block-near-pivot",
-                                 "joints-coincide", "blocks-pass-through", "angle-in-radians"})
+                                 "joints-coincide", "blocks-pass-through", "angle-in-radians", "load-in-kn"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

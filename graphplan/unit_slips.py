@@ -1,14 +1,17 @@
 """Values of a linkage typed in another unit than the scene's that still run: a crank's speed in rev/min given as
 ``omega`` (1450 rad/s for a 1450 rpm motor), a link's mass in grams (a 0.3 m rocker of 300 kg), its moment of
-inertia in kg·mm² (a 0.55 m coupler turning about a radius of gyration of 5.5 m).  Every result
-follows them a thousand or ten times off, so the run warns at its first position, naming the key, its value and
-what was likely meant, as it warns of lengths in millimetres (:mod:`graphplan.length_units`).
+inertia in kg·mm² (a 0.55 m coupler turning about a radius of gyration of 5.5 m), a load in kN (a piston's 4.5 kN
+gas force typed 4.5, which its own inertia force dwarfs).  Every result follows them a thousand or ten times off, so
+the run warns at its first position, naming the key, its value and what was likely meant, as it warns of lengths in
+millimetres (:mod:`graphplan.length_units`).
 """
 
 from __future__ import annotations
 
 import math
 from fractions import Fraction
+
+import numpy as np
 
 from .mechanism import Mechanism
 from .motion import Motion, PositionWarning
@@ -236,6 +239,64 @@ def centres_as_shares(mechanism: Mechanism, motion: Motion) -> tuple[PositionWar
     if not told:
         return ()
     return (PositionWarning(0, "centre-as-share", "; ".join(told)),)
+
+
+# A force typed in kN, a moment in kN·m, where the scene asks N and N·m: a piston's 4.5 kN gas force typed 4.5.  The
+# fixtures' forces are 3 to 17 times the largest of their link's own weight and inertia force, their moments 1.8 to
+# 28 times the larger of their link's inertia moment J·ε and its weight's moment m·g·l over its span; a thousandth
+# of them is under 4 % of those.  A load under KILO_SLIP of them is told: no mechanism is built to carry a useful
+# load that its own link's weight and inertia dwarf twenty times over, and its polygon would draw it as a dot.
+KILO_SLIP = 0.05
+
+
+def loads_in_kilonewtons(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
+    """A ``load-in-kn`` warning, at the first position, naming each force or moment (its ``value``, or its
+    ``diagram``'s largest) under :data:`KILO_SLIP` of the largest load its own link carries of itself over the
+    positions: for a force, its weight m·g and inertia force m·aS; for a moment, its inertia moment J·ε and its
+    weight's moment m·g·l over its span.  A spring's force, which its length sets, and a link with no mass or J to
+    judge by are not told."""
+    scene = mechanism.scene
+    told = []
+    for spec in scene.loads:
+        link = scene.links.get(spec.link)
+        if not spec.value or link is None:  # a spring's, which its length sets, or a load left at 0: no slip of units
+            continue
+        own = _own_loads(motion, spec.kind == "force", spec.link, link, scene.gravity)
+        largest = max((value for _, value, _ in own), default=0.0)
+        if not (largest > 0 and abs(spec.value) < KILO_SLIP * largest):
+            continue
+        unit = "N" if spec.kind == "force" else "N·m"
+        key, typed = ((f"{spec.where}.diagram", f"with values up to {spec.value:g} {unit}") if spec.diagram
+                      else (f"{spec.where}.value", f"= {spec.value:g} {unit}"))
+        meant = "its values × 1000" if spec.diagram else f"{key} = {spec.value * 1000:g}"
+        told.append(f"{key} {typed} is {written(100.0 * abs(spec.value) / largest, 2)} % of the largest load link "
+                    f"{spec.link} carries of itself ({', '.join(f'{name} {written(value, 3)} {unit}{why}' for name, value, why in own)})"
+                    f": k{unit} typed for {unit}? {spec.value:g} k{unit} is {meant}")
+    if not told:
+        return ()
+    return (PositionWarning(0, "load-in-kn", "; ".join(told) + ": the scene's forces are in N, its moments in N·m"),)
+
+
+def _own_loads(motion: Motion, force: bool, number: int, link, gravity: float) -> list[tuple[str, float, str]]:
+    """The loads link ``number`` carries of itself, largest over the positions, each named, with what it is taken
+    over: for a ``force``, its weight and inertia force; else its inertia moment and its weight's moment over its
+    span."""
+    weight = link.mass * gravity
+    own = []
+    if force:
+        if weight > 0:
+            own.append(("its weight m·g", weight, ""))
+        if link.mass > 0 and link.centre is not None:
+            accelerations = np.hypot(*np.asarray(motion.point(link.centre).a, dtype=float).T)
+            own.append(("its inertia force m·aS up to", link.mass * float(np.nanmax(accelerations)), ""))
+        return own
+    if link.inertia > 0:
+        epsilon = np.abs(np.asarray(motion.link(number).epsilon, dtype=float))
+        own.append(("its inertia moment J·ε up to", link.inertia * float(np.nanmax(epsilon)), ""))
+    span = motion.span(number)
+    if weight > 0 and span is not None:
+        own.append(("its weight's moment m·g·l", weight * span[0], f", l = {written(span[0], 3)} m its span ({span[1]})"))
+    return own
 
 
 def _crank_depth(mass: float, inertia: float) -> float | None:
