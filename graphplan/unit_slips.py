@@ -286,17 +286,23 @@ def _own_loads(motion: Motion, force: bool, number: int, link, gravity: float) -
     if force:
         if weight > 0:
             own.append(("its weight m·g", weight, ""))
-        if link.mass > 0 and link.centre is not None:
-            accelerations = np.hypot(*np.asarray(motion.point(link.centre).a, dtype=float).T)
-            own.append(("its inertia force m·aS up to", link.mass * float(np.nanmax(accelerations)), ""))
+        accelerations = np.hypot(*np.asarray(motion.point(link.centre).a, dtype=float).T) if link.centre else []
+        if link.mass > 0 and (largest := _largest(accelerations)) is not None:
+            own.append(("its inertia force m·aS up to", link.mass * largest, ""))
         return own
-    if link.inertia > 0:
-        epsilon = np.abs(np.asarray(motion.link(number).epsilon, dtype=float))
-        own.append(("its inertia moment J·ε up to", link.inertia * float(np.nanmax(epsilon)), ""))
+    if link.inertia > 0 and (largest := _largest(np.abs(motion.link(number).epsilon))) is not None:
+        own.append(("its inertia moment J·ε up to", link.inertia * largest, ""))
     span = motion.span(number)
     if weight > 0 and span is not None:
         own.append(("its weight's moment m·g·l", weight * span[0], f", l = {written(span[0], 3)} m its span ({span[1]})"))
     return own
+
+
+def _largest(values) -> float | None:
+    """The largest of ``values`` that is a number: a position a singular one leaves without its accelerations has
+    none; None where none is."""
+    finite = np.asarray(values, dtype=float)[np.isfinite(values)]
+    return float(finite.max()) if finite.size else None
 
 
 def _crank_depth(mass: float, inertia: float) -> float | None:
