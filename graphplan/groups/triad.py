@@ -318,8 +318,8 @@ class Triad(Group):
                             f"{self.ternary}")
             else:
                 none.append(f"no length of {outer}{inner} alone does")
-        told = [f"the triad closes at every angle of the turn, the other legs as given, only with {', or '.join(ranges)}"]
-        return "; ".join(told + none if ranges else none)
+        only = f"the triad closes at every angle of the turn, the other legs as given, only with {', or '.join(ranges)}"
+        return "; ".join(([only] if ranges else []) + none)
 
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
         a, b, c, d, e, f = self.joints
