@@ -1,5 +1,6 @@
 """A triad that stops a crank which should turn round is told, leg by leg, the lengths that close it at every angle of
-the turn, the other legs as given, as a dyad is told its lengths; a triad with a sliding leg has its digit-off lengths
+the turn, the other legs as given, as a dyad is told its lengths (one that closes at no angle, those that close it at
+some); a triad with a sliding leg has its digit-off lengths
 tried too, and its keys told as written.  The triad's refusal gave the crank's reach and a swing, and nothing to make
 it turn round, where a dyad's said which lengths would.  Each bound told is checked against the solver itself: at the
 bound the crank turns round, half a percent past it it does not."""
@@ -19,7 +20,7 @@ from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET, _hung_o
 import graphplan
 from graphplan.errors import AssemblyError
 from graphplan.mechanism import build
-from graphplan.positions import turns_round
+from graphplan.positions import reach, turns_round
 from graphplan.scene import Scene, loads
 
 TRIAD = Path("fixtures/triad_class_iii.toml").read_text(encoding="utf-8")
@@ -89,6 +90,24 @@ def test_a_leg_no_length_of_which_helps_is_told_where_the_others_cannot_close():
     apart = abs(e - a)
     nearest = max(0.0, apart - ab - ef, abs(ab - ef) - apart)
     assert not nearest <= fb <= apart + ab + ef
+
+
+def test_a_triad_that_closes_at_no_angle_is_told_each_leg_s_lengths_that_close_it_at_some():
+    """AB at 0.02 m: the triad closes at no angle of the crank.  Each leg is told the lengths that close it at some
+    angle, the other legs as given; the solver finds a reach at each end told, and none half a percent beyond."""
+    scene = loads(_edited(TRIAD, "lengths = [0.135, 0.108, 0.189]", "lengths = [0.02, 0.108, 0.189]"))
+    message = _refusal(scene)
+    assert "the mechanism assembles at no angle of link 2: the triad closes at some angle, the other legs as given, " \
+           "only with groups[0].lengths[0] (AB) from" in message
+    told = _ranges(message)
+    assert sorted(told) == [0, 1, 2]
+
+    def reaches(length: float) -> bool:
+        changed = replace(scene.groups[0], lengths=(length, 0.108, 0.189))
+        return bool(reach(build(replace(scene, groups=(changed,)))))
+
+    low, high = told[0]
+    assert reaches(low) and reaches(high) and not reaches(low * 0.995) and not reaches(high * 1.005)
 
 
 def test_lengths_that_close_at_every_angle_are_not_told_as_the_cause():

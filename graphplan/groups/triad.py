@@ -295,7 +295,16 @@ class Triad(Group):
         """Each turning leg's lengths that close the triad at every angle of the turn ``before`` it, the other legs as
         given (:func:`~graphplan.groups.triad_legs.leg_reaches`); None where the lengths given do: then it is the
         assembly followed that folds, which no one leg's length explains."""
-        reaches = leg_reaches(self, before)
+        return self._lengths_told(leg_reaches(self, before), before, "at every angle of the turn")
+
+    def nowhere(self, before) -> str | None:
+        """Where the crank assembles at no angle: each turning leg's lengths that close the triad at some angle of
+        the turn ``before`` it (over the angles the groups before it assemble at), the other legs as given."""
+        return self._lengths_told(leg_reaches(self, before, somewhere=True), before, "at some angle")
+
+    def _lengths_told(self, reaches, before, where: str) -> str | None:
+        """The legs' :class:`~graphplan.groups.triad_legs.LegReach` in words: each leg's range with its key, or that no
+        length of it alone does; None where the lengths given are within them all."""
         if all(reach.nearest is not None and reach.nearest <= self.lengths[reach.leg] <= (reach.farthest or math.inf)
                for reach in reaches):
             return None
@@ -318,7 +327,7 @@ class Triad(Group):
                             f"{self.ternary}")
             else:
                 none.append(f"no length of {outer}{inner} alone does")
-        only = f"the triad closes at every angle of the turn, the other legs as given, only with {', or '.join(ranges)}"
+        only = f"the triad closes {where}, the other legs as given, only with {', or '.join(ranges)}"
         return "; ".join(([only] if ranges else []) + none)
 
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:

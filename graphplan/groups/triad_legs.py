@@ -31,10 +31,11 @@ _UNBOUNDED = 100.0
 
 @dataclass(frozen=True)
 class LegReach:
-    """The lengths of one turning leg that close the triad at every angle of the turn, the others as given: from
-    ``nearest`` to ``farthest`` (m; ``farthest`` None where no length is too long); or none, ``nearest`` None, where
-    at the crank's angle ``shut_at`` (rad) the other two legs close at no turn of the ternary link, whatever this
-    one's length."""
+    """The lengths of one turning leg that close the triad at every angle of the turn (or at some angle), the others
+    as given: from ``nearest`` to ``farthest`` (m; ``farthest`` None where no length is too long); or none,
+    ``nearest`` None, where at the crank's angle ``shut_at`` (rad) the other two legs close at no turn of the ternary
+    link, whatever this one's length (at some angle: where they close at none, or the lengths that close it at one
+    angle or another leave a gap)."""
 
     leg: int
     nearest: float | None
@@ -42,9 +43,17 @@ class LegReach:
     shut_at: float | None = None
 
 
-def leg_reaches(triad, before) -> tuple[LegReach, ...]:
+# Which of a leg's distances bounds it, nearest (0) or farthest (1), and whether by its largest over the angles:
+# all round the turn, the largest nearest and the least farthest; at some angle, the least nearest and the largest
+# farthest.
+_ALL_ROUND = ((0, True), (1, False))
+_SOMEWHERE = ((0, False), (1, True))
+
+
+def leg_reaches(triad, before, somewhere: bool = False) -> tuple[LegReach, ...]:
     """Each turning leg's :class:`LegReach` over ``before``, the motion of the groups before the triad over the
-    whole turn, in the scene's assembly; the ternary link's corners run the way the scene's sketch has them."""
+    whole turn (with ``somewhere``, over the angles they assemble at), in the scene's assembly; the ternary link's
+    corners run the way the scene's sketch has them."""
     tracks = _tracks(triad, before)
     local = triad.local_corners(triad.sketched_turn)
     count = len(before.driver)
@@ -52,34 +61,44 @@ def leg_reaches(triad, before) -> tuple[LegReach, ...]:
     turns = np.linspace(0.0, 2.0 * math.pi, _TURNS + 1)
     reaches = []
     for leg in triad.turning_legs:
-        nearest, farthest = _distances(tracks, local, leg, coarse, turns)
-        if not np.all(np.isfinite(nearest)):
-            shut = coarse[np.argmin(np.isfinite(nearest))]
-            reaches.append(LegReach(leg, None, None, shut_at=float(before.driver[shut])))
+        distances = _distances(tracks, local, leg, coarse, turns)
+        closes = np.isfinite(distances[0])
+        if somewhere and not (closes.any() and _one_span(*distances)):
+            reaches.append(LegReach(leg, None, None))
             continue
-        low = _refined(tracks, local, leg, coarse, _bound(nearest, farthest, -1), -1)
-        high = _refined(tracks, local, leg, coarse, _bound(nearest, farthest, 1), 1)
+        if not somewhere and not closes.all():
+            reaches.append(LegReach(leg, None, None, shut_at=float(before.driver[coarse[np.argmin(closes)]])))
+            continue
+        low, high = (_refined(tracks, local, leg, coarse, _at(distances, bound), bound)
+                     for bound in (_SOMEWHERE if somewhere else _ALL_ROUND))
         reaches.append(LegReach(leg, low, None if high > _UNBOUNDED * triad.size else high))
     return tuple(reaches)
 
 
-def _refined(tracks, local, leg: int, coarse: np.ndarray, binding: int, side: int) -> float:
-    """The bound that binds near the coarse angle ``binding`` (the largest nearest, ``side`` −1, or the least
-    farthest, 1): the angle found again among the motion's samples about it, then the link's turns swept finely
-    there and at its neighbours."""
+def _one_span(nearest: np.ndarray, farthest: np.ndarray) -> bool:
+    """Whether the lengths from ``nearest`` to ``farthest`` at each angle where they close join into one span."""
+    closes = np.isfinite(nearest)
+    order = np.argsort(nearest[closes])
+    reached = np.maximum.accumulate(farthest[closes][order])
+    return bool(np.all(nearest[closes][order][1:] <= reached[:-1]))
+
+
+def _refined(tracks, local, leg: int, coarse: np.ndarray, binding: int, bound: tuple[int, bool]) -> float:
+    """The ``bound`` (:data:`_ALL_ROUND`, :data:`_SOMEWHERE`) at its coarse angle ``binding``, found again among the
+    motion's samples about it, then with the link's turns swept finely there and at its neighbours."""
     start = coarse[max(binding - 1, 0)]
     stop = coarse[min(binding + 1, len(coarse) - 1)]
     angles = np.unique(np.linspace(start, stop, 2 * _FINE_WINDOW + 1).round().astype(int))
-    bound = _bound(*_distances(tracks, local, leg, angles, np.linspace(0.0, 2.0 * math.pi, _TURNS + 1)), side)
-    angles = angles[max(bound - 1, 0):bound + 2]
-    fine = np.linspace(0.0, 2.0 * math.pi, _TURNS * _FINE_TURNS + 1)
-    distances = _distances(tracks, local, leg, angles, fine)
-    return float(distances[side > 0][_bound(*distances, side)])
+    at = _at(_distances(tracks, local, leg, angles, np.linspace(0.0, 2.0 * math.pi, _TURNS + 1)), bound)
+    angles = angles[max(at - 1, 0):at + 2]
+    distances = _distances(tracks, local, leg, angles, np.linspace(0.0, 2.0 * math.pi, _TURNS * _FINE_TURNS + 1))
+    return float(distances[bound[0]][_at(distances, bound)])
 
 
-def _bound(nearest: np.ndarray, farthest: np.ndarray, side: int) -> int:
-    """Where the largest nearest (``side`` −1) or the least farthest (1) is."""
-    return int(np.nanargmax(nearest)) if side < 0 else int(np.nanargmin(farthest))
+def _at(distances: tuple[np.ndarray, np.ndarray], bound: tuple[int, bool]) -> int:
+    """Where the ``bound`` is among the angles ``distances`` are at."""
+    of, largest = bound
+    return int((np.nanargmax if largest else np.nanargmin)(distances[of]))
 
 
 def _distances(tracks, local, leg: int, angles: np.ndarray, turns: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
