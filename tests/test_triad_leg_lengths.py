@@ -1,9 +1,9 @@
 """A triad that stops a crank which should turn round is told, leg by leg, the lengths that close it at every angle of
 the turn, the other legs as given, as a dyad is told its lengths (one that closes at no angle, those that close it at
-some); a triad with a sliding leg has its digit-off lengths
-tried too, and its keys told as written.  The triad's refusal gave the crank's reach and a swing, and nothing to make
-it turn round, where a dyad's said which lengths would.  Each bound told is checked against the solver itself: at the
-bound the crank turns round, half a percent past it it does not."""
+some); a triad with a sliding leg has its digit-off lengths tried too, and its keys told as written.  The triad's
+refusal gave the crank's reach and a swing, and nothing to make it turn round, where a dyad's said which lengths
+would.  Each bound told is checked against the solver itself: at the bound the crank turns round (or reaches),
+half a percent past it it does not."""
 
 from __future__ import annotations
 
