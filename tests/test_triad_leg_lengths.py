@@ -142,3 +142,16 @@ def test_a_triad_with_a_slot_is_told_its_turning_legs_lengths(variant, old, new,
     if variant.endswith("guide"):
         assert told[0][1] is None and _turns_round(scene, 1, 0, 1.0)
     assert not np.isnan([bound for low_high in told.values() for bound in low_high if bound is not None]).any()
+
+
+def test_a_leg_whose_corner_passes_over_its_outer_joint_is_told_a_length_under_its_farthest():
+    """Where the corner comes onto the leg's outer joint at some angle, any length short of the farthest closes the
+    triad there: told as under it, not from a length of 10⁻¹⁷ m."""
+    from graphplan.groups.triad_legs import LegReach
+
+    scene = loads(TRIAD)
+    triad = scene.groups[0]
+    told = triad._lengths_told((LegReach(0, 1e-17, 0.3), LegReach(1, None, None), LegReach(2, 0.25, None)),
+                               None, "at some angle")
+    assert told == ("the triad closes at some angle, the other legs as given, only with groups[0].lengths[0] (AB) "
+                    "under 0.2999 m, or groups[0].lengths[2] (EF) from 0.2501 m up; no length of CD alone does")

@@ -46,7 +46,7 @@ from ..geometry import Line, cross_lines
 from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy, radians_within_a_turn
-from ..rounding import figures_above, figures_below
+from ..rounding import ROUNDING_NOISE, figures_above, figures_below
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
 from .sliding import (
@@ -313,9 +313,13 @@ class Triad(Group):
             outer, inner, _ = self.arms()[reach.leg]
             key = f"{self.where}.lengths[{self.turning_legs.index(reach.leg)}] ({outer}{inner})"
             if reach.nearest is not None:
-                low = figures_above(reach.nearest)
+                # A corner that passes over its outer joint at some angle closes with a leg as short as any.
+                low = figures_above(reach.nearest) if reach.nearest > ROUNDING_NOISE * self.size else None
                 if reach.farthest is None:
-                    ranges.append(f"{key} from {low:.6g} m up")
+                    ranges.append(f"{key} from {low:.6g} m up" if low is not None else f"{key} of any length")
+                    continue
+                if low is None:
+                    ranges.append(f"{key} under {figures_below(reach.farthest):.6g} m")
                     continue
                 if low < (high := figures_below(reach.farthest)):
                     ranges.append(f"{key} from {low:.6g} m to {high:.6g} m")
