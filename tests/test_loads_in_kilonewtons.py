@@ -83,3 +83,23 @@ def test_the_note_says_so_under_its_initial_data(locale):
     said = strings(locale)["note_warning_load_in_kn"]
     assert said in note and note.index(said) < note.index("\n## 3")
     assert said not in note_markdown(analyse(dataclasses.replace(loads(ENGINE), locale=locale)))
+
+
+FIXTURES = sorted(Path("fixtures").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", FIXTURES, ids=lambda path: path.stem)
+def test_every_fixture_s_load_typed_in_kilonewtons_is_told(path):
+    """Each fixture's force or moment divided by 1000, as typed in kN or kN·m: the same warning, at its key, every
+    time (the fixtures' loads, as given, are told nothing: test_more_unit_slips)."""
+    text = path.read_text(encoding="utf-8")
+    given = [spec for spec in loads(text).loads if spec.value and not spec.diagram]
+    if not given:
+        pytest.skip("no load with a value")
+    for spec in given:
+        (line,) = [match for match in re.finditer(r"(?m)^(value\s*=\s*)([-\d.e]+)", text)
+                   if float(match[2]) == spec.value]
+        slipped = text[:line.start(2)] + repr(spec.value / 1000.0) + text[line.end(2):]
+        (detail,) = _told(slipped)
+        assert detail.startswith(f"{spec.where}.value = {spec.value / 1000.0:g} N")
+        assert f"is {spec.where}.value = {spec.value:g}:" in detail
