@@ -1,5 +1,6 @@
-"""How long a triad's turning leg may be for the crank to turn round: the nearest and the farthest its inner joint can
-be from its outer joint with the other two legs as given, at every angle of the turn.
+"""How long a triad's turning leg may be for the crank to turn round, or to assemble at all: the nearest and the
+farthest its inner joint can be from its outer joint with the other two legs as given, at every angle of the turn (or
+at some angle of it).
 
 Left without one leg, the ternary link keeps one freedom: turned to ψ, each of the other two legs holds B on a circle
 or a line (its track carried back by B's side to its corner, as :meth:`Triad.assemblies` turns the link round), B is
@@ -16,8 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# The turn sampled first, then again about the angle that binds, as finely as the motion before the group was solved
-# (``before``, every hundredth of a degree): a bound off by a sample would round to another fourth figure.
+# The turn sampled at _COARSE_ANGLES angles first, then again over a coarse step either side of the angle that binds at
+# _FINE_WINDOW angles a side, picked from the motion before the group (``before``, solved every hundredth of a degree):
+# the bound at the coarse angle alone is off in its fourth figure.
 _COARSE_ANGLES = 180
 _FINE_WINDOW = 40
 # The ternary link's turns sampled at each angle, then at the binding angle and its neighbours _FINE_TURNS times as
