@@ -269,9 +269,10 @@ def loads_in_kilonewtons(mechanism: Mechanism, motion: Motion) -> tuple[Position
         key, typed = ((f"{spec.where}.diagram", f"with values up to {spec.value:g} {unit}") if spec.diagram
                       else (f"{spec.where}.value", f"= {spec.value:g} {unit}"))
         meant = "its values × 1000" if spec.diagram else f"{key} = {spec.value * 1000:g}"
+        carried = ", ".join(f"{name} {written(value, 3)} {unit}{why}" for name, value, why in own)
         told.append(f"{key} {typed} is {written(100.0 * abs(spec.value) / largest, 2)} % of the largest load link "
-                    f"{spec.link} carries of itself ({', '.join(f'{name} {written(value, 3)} {unit}{why}' for name, value, why in own)})"
-                    f": k{unit} typed for {unit}? {spec.value:g} k{unit} is {meant}")
+                    f"{spec.link} carries of itself ({carried}): k{unit} typed for {unit}? {spec.value:g} k{unit} is "
+                    f"{meant}")
     if not told:
         return ()
     return (PositionWarning(0, "load-in-kn", "; ".join(told) + ": the scene's forces are in N, its moments in N·m"),)
@@ -294,7 +295,8 @@ def _own_loads(motion: Motion, force: bool, number: int, link, gravity: float) -
         own.append(("its inertia moment J·ε up to", link.inertia * largest, ""))
     span = motion.span(number)
     if weight > 0 and span is not None:
-        own.append(("its weight's moment m·g·l", weight * span[0], f", l = {written(span[0], 3)} m its span ({span[1]})"))
+        own.append(("its weight's moment m·g·l", weight * span[0],
+                    f", l = {written(span[0], 3)} m its span ({span[1]})"))
     return own
 
 

@@ -55,7 +55,8 @@ def test_a_triad_s_slot_angle_typed_in_radians_is_told():
     """A triad's slot at 2.0944 to the ternary link's BD for 120°: the block slides in another slot, which the
     ratchet's triad assembles in too, so nothing else stops it."""
     group = _HUNG_ON_THE_RATCHET["ratchet+triad-slot"]
-    slotted = _hung_on_the_ratchet(_edited(group, "slots = { G = { angle = -77.0 } }", "slots = { G = { angle = 2.0944 } }"))
+    slotted = _hung_on_the_ratchet(_edited(group, "slots = { G = { angle = -77.0 } }",
+                                           "slots = { G = { angle = 2.0944 } }"))
     told = [warning.detail for warning in slotted().analyse().warnings if warning.code == "angle-in-radians"]
     assert told == [("groups[1].slots.G.angle = 2.0944 is 2π/3 in radians: the scene's angles are in degrees, so it is "
                      "taken as 2.0944°; give 120 if 120° is meant")]

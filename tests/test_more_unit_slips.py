@@ -298,6 +298,7 @@ def test_no_fixture_test_scene_or_starter_is_told_of_these_slips(tmp_path, scene
     told = list(outcome_warnings(loaded, pieces, None))
     if loaded.driver is not None:
         warnings = analyse(loaded).warnings
-        assert not [warning for warning in warnings if warning.code in ("masses-in-grams", "centre-as-share", "load-in-kn")]
+        assert not [warning for warning in warnings
+                    if warning.code in ("masses-in-grams", "centre-as-share", "load-in-kn")]
         told += [warning.detail for warning in warnings]
     assert not [line for line in told if "too compact for a flywheel" in line or "lie apart along the axis" in line]

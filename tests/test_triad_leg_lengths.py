@@ -40,8 +40,8 @@ def _refusal(scene) -> str:
 
 def _ranges(message: str) -> dict[int, tuple[float, float | None]]:
     """The told ranges by the index of ``lengths``: from, to (None: up)."""
-    return {int(index): (float(low), float(high) if high else None)
-            for index, low, high in re.findall(r"lengths\[(\d)\] \(\w+\) from ([\d.]+) m (?:to ([\d.]+) m|up)", message)}
+    told = re.findall(r"lengths\[(\d)\] \(\w+\) from ([\d.]+) m (?:to ([\d.]+) m|up)", message)
+    return {int(index): (float(low), float(high) if high else None) for index, low, high in told}
 
 
 def _turns_round(scene, group: int, index: int, length: float) -> bool:
@@ -58,7 +58,8 @@ def _assert_bounds_hold(scene, group: int, told: dict[int, tuple[float, float | 
     for index, (low, high) in told.items():
         assert _turns_round(scene, group, index, low) and not _turns_round(scene, group, index, low * 0.995), index
         if high is not None:
-            assert _turns_round(scene, group, index, high) and not _turns_round(scene, group, index, high * 1.005), index
+            assert _turns_round(scene, group, index, high), index
+            assert not _turns_round(scene, group, index, high * 1.005), index
 
 
 @functools.cache
