@@ -269,10 +269,12 @@ def loads_in_kilonewtons(mechanism: Mechanism, motion: Motion) -> tuple[Position
         key, typed = ((f"{spec.where}.diagram", f"with values up to {spec.value:g} {unit}") if spec.diagram
                       else (f"{spec.where}.value", f"= {spec.value:g} {unit}"))
         meant = "its values × 1000" if spec.diagram else f"{key} = {spec.value * 1000:g}"
+        # A thousand times a load that stays under the bound is no load in kN either.
+        guess = (f"k{unit} typed for {unit}? {spec.value:g} k{unit} is {meant}"
+                 if abs(spec.value) * 1000 >= KILO_SLIP * largest else "no unit explains it: a mistaken value?")
         carried = ", ".join(f"{name} {written(value, 3)} {unit}{why}" for name, value, why in own)
         told.append(f"{key} {typed} is {written(100.0 * abs(spec.value) / largest, 2)} % of the largest load link "
-                    f"{spec.link} carries of itself ({carried}): k{unit} typed for {unit}? {spec.value:g} k{unit} is "
-                    f"{meant}")
+                    f"{spec.link} carries of itself ({carried}): {guess}")
     if not told:
         return ()
     return (PositionWarning(0, "load-in-kn", "; ".join(told) + ": the scene's forces are in N, its moments in N·m"),)

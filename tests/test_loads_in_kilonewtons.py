@@ -68,6 +68,12 @@ def test_a_load_its_link_does_not_dwarf_twenty_times_is_not_told(value, told):
     assert bool(_told(_edited(ENGINE, GAS_FORCE, f"value     = {value}"))) is told
 
 
+def test_a_load_a_thousand_times_too_small_even_in_kilonewtons_is_not_said_to_be_in_them():
+    (detail,) = _told(_edited(ENGINE, GAS_FORCE, "value     = 1e-06"))
+    assert detail.startswith("loads[0].value = 1e-06 N is ")
+    assert detail.endswith("): no unit explains it: a mistaken value?: the scene's forces are in N, its moments in N·m")
+
+
 def test_masses_in_grams_are_told_instead():
     """The piston typed as 900 g: its inertia force 1000 times too large would make the true gas force a slip."""
     text = _edited(ENGINE, "mass    = 0.9\n", "mass    = 900.0\n")
