@@ -101,7 +101,8 @@ def test_a_rod_pinned_at_a_named_point_that_reaches_no_guide_names_the_points_ke
     """The shaper's rod DE is pinned at D, a named point up the slotted lever (points.D, at = 0.65 m from C).
     Typed a digit short, 0.065, D stays within 0.065 m of C, at least 0.64 − 0.065 = 0.575 m below the ram's guide,
     which the 0.2 m rod cannot reach at any angle of the crank: the refusal said "check the lengths", none of which
-    is wrong, and named no key.  It names the key that places D, with its value."""
+    is wrong, and named no key.  It names the key that places D, with its value, after the rod that would reach
+    (D's nearest to the guide, 0.575 m at the crank's 270°, where the lever stands nearest upright)."""
     starter = tmp_path / "shaper.toml"
     assert main(["new", "shaper", "--out", str(starter)]) == 0
     text = starter.read_text(encoding="utf-8")
@@ -112,7 +113,9 @@ def test_a_rod_pinned_at_a_named_point_that_reaches_no_guide_names_the_points_ke
     assert main(["run", str(scene), "--out", str(out)]) == 2
     told = capsys.readouterr().err.strip().splitlines()[-1]
     assert told.startswith("graphplan: error: E cannot be assembled") and "assembles at no angle of link 2" in told
-    assert told.endswith("check the lengths, and where points.D places D: at = 0.065 m from C toward A"), told
+    assert told.endswith("D comes no nearer the guide than 0.575 m (at φ = 270°), farther than DE = 0.2 m: "
+                         "groups[1].length from 0.5751 m up, or the guide nearer D, and where points.D places D: "
+                         "at = 0.065 m from C toward A"), told
     assert not out.exists()
 
 

@@ -242,11 +242,14 @@ def test_a_swing_beyond_the_reach_is_told_the_reach_and_a_swing_to_its_end_as_to
 
 
 def test_a_mechanism_that_assembles_nowhere_is_told_to_check_its_lengths(text):
-    # AB + BC = 0.04 m, shorter than the least A–C there is: OC − OA = 0.05 m.
+    """AB + BC = 0.04 m, shorter than the least A–C there is, OC − OA = 0.05 m (its most OC + OA = 0.55 m): with BC
+    at 0.02 m, AB closes B at some angle from 0.05 − 0.02 to 0.55 + 0.02 m, told rounded inward."""
     short = changed(text, r"^lengths  = \[0\.12, 0\.2\] .*$", "lengths  = [0.02, 0.02]")
     with pytest.raises(AssemblyError) as raised:
         analyse(loads(short))
-    assert "assembles at no angle of link 2: check the lengths" in str(raised.value)
+    assert ("assembles at no angle of link 2: A–C runs from 0.05 m (at φ = 0°) to 0.55 m (at φ = 180°), so B closes "
+            "at some angle only where AB + BC ≥ 0.05 m and |AB − BC| ≤ 0.55 m: groups[0].lengths[0] (AB) from "
+            "0.03001 m to 0.5699 m with BC as given") in str(raised.value)
 
 
 def test_the_kinematic_diagrams_run_over_the_swing_as_worked_by_hand(text):

@@ -1,16 +1,21 @@
 """A crank that reaches only part of its turn is told what the lengths of the group that stops it must be for it to
 turn round, read off the groups before it over the whole turn.  A slider driven off a four-bar's coupler point was
 told only where its first position failed: lengthened past that, the rod was refused at the next position, and so
-on, while the bound it had to clear was a number the refusal could give."""
+on, while the bound it had to clear was a number the refusal could give.  A crank that assembles at no angle is told
+the lengths that close the group at some angle, where it was told only to check the lengths."""
 
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from graphplan.cli import main
+from graphplan.mechanism import build
+from graphplan.positions import reach
+from graphplan.scene import loads
 
 # A crank-rocker (O, C 0.55 m above it; OA 0.175, AB 0.55, BC 0.325 m, B left of A→C) whose coupler point E, 0.30 m
 # along A→B and 0.12 m to its left, drives a slider on the line y = −0.35 m through a rod EF.
@@ -136,3 +141,44 @@ def test_a_guide_on_a_moving_link_is_read_as_it_turns(tmp_path, capsys) -> None:
     assert float(found[1]) == pytest.approx(most, abs=6e-7)  # to its six figures
     path.write_text(scene.format(rod=float(found[2])), encoding="utf-8")
     assert main(["check", str(path)]) == 0
+
+
+# --- a crank that assembles at no angle ----------------------------------------------------------------------------
+
+def test_a_four_bar_that_closes_at_no_angle_is_told_each_length_that_closes_it_at_some(tmp_path, capsys) -> None:
+    """AB = BC = 0.1 m for the four-bar's A–C of 0.375 … 0.725 m (0.55 m ∓ the crank's 0.175 m, at 90° and 270°):
+    B closes at some angle only where AB + BC ≥ 0.375 and |AB − BC| ≤ 0.725, AB from 0.275 to 0.825 m with BC at
+    0.1, each told rounded inward; the solver finds a reach at each length told and none a tenth of a millimetre
+    outside it."""
+    text = COUPLER_SLIDER.format(rod=1.0)
+    scene = tmp_path / "short_links.toml"
+    scene.write_text(text.replace("lengths = [0.55, 0.325]", "lengths = [0.1, 0.1]"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    told = capsys.readouterr().err
+    assert ("the mechanism assembles at no angle of link 2: A–C runs from 0.375 m (at φ = 90°) to 0.725 m (at φ = "
+            "270°), so B closes at some angle only where AB + BC ≥ 0.375 m and |AB − BC| ≤ 0.725 m: "
+            "groups[0].lengths[0] (AB) from 0.2751 m to 0.8249 m with BC as given, or groups[0].lengths[1] (BC) "
+            "from 0.2751 m to 0.8249 m with AB as given") in told, told
+
+    def reaches(ab: float) -> bool:
+        return bool(reach(build(loads(text.replace("lengths = [0.55, 0.325]", f"lengths = [{ab}, 0.1]")))))
+
+    assert reaches(0.2751) and reaches(0.8249) and not reaches(0.2749) and not reaches(0.8251)
+
+
+def test_a_slider_whose_guide_no_angle_brings_in_reach_is_told_the_rod_that_reaches_it(tmp_path, capsys) -> None:
+    """The engine's cylinder axis moved up to y = 0.5 m: the crank pin A, 0.05 m about O, comes no nearer it than
+    0.45 m (at 90°), farther than the 0.19 m rod; a rod of 0.4501 m reaches it there."""
+    text = Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8").replace(
+        'guide    = { through = "O", angle = 0.0 }', 'guide    = { through = [0.0, 0.5], angle = 0.0 }')
+    scene = tmp_path / "far_guide.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    told = capsys.readouterr().err
+    assert ("the mechanism assembles at no angle of link 2: A comes no nearer the guide than 0.45 m (at φ = 90°), "
+            "farther than AB = 0.19 m: groups[0].length from 0.4501 m up, or the guide nearer A") in told, told
+
+    def reaches(rod: float) -> bool:
+        return bool(reach(build(loads(text.replace("length   = 0.19 ", f"length   = {rod} ")))))
+
+    assert reaches(0.4501) and not reaches(0.4499)

@@ -102,6 +102,21 @@ class RRP(Group):
         return (f"over the turn {a} comes as far as {most:.6g} m from the guide (at {place}), so the crank turns round "
                 f"only where {a}{b} > {most:.6g} m: {self.where}.length from {figures_above(most):.6g} m up")
 
+    def nowhere(self, before) -> str | None:
+        """Where the crank assembles at no angle: A's nearest to the guide over the angles ``before`` the group
+        assembles at, where AB falls short of it."""
+        a, b = self.joints
+        guide = before.guide(self.guide)
+        heights = np.abs(cross(guide.u, before.points[a].r - guide.origin.r))
+        nearest = int(np.argmin(heights))
+        least = float(heights[nearest])
+        if self.length >= least:
+            return None
+        place = before.mechanism.driver.describe(float(before.driver[nearest]))
+        return (f"{a} comes no nearer the guide than {least:.6g} m (at {place}), farther than {a}{b} = "
+                f"{self.length:.6g} m: {self.where}.length from {figures_above(least):.6g} m up, or the guide "
+                f"nearer {a}")
+
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b = self.joints
         return {self.links[0]: (a, b), self.links[1]: (b,)}

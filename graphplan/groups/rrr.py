@@ -80,6 +80,29 @@ class RRR(Group):
                 ranges.append(f"{self.where}.lengths[{k}] ({name}) {span} with {other_name} as given")
         return f"{told}: {', or '.join(ranges)}" if ranges else told
 
+    def nowhere(self, before) -> str | None:
+        """Where the crank assembles at no angle: A–C's nearest and farthest over the angles ``before`` the group
+        assembles at; B closes at some angle where [|AB − BC|, AB + BC] reaches into them, and each length's range
+        for that, the other as given."""
+        a, b, c = self.joints
+        spans = np.abs(before.points[a].r - before.points[c].r)
+        nearest, farthest = int(np.argmin(spans)), int(np.argmax(spans))
+        least, most = float(spans[nearest]), float(spans[farthest])
+        ab, bc = self.lengths
+        if ab + bc >= least and abs(ab - bc) <= most:
+            return None
+        near, far = (before.mechanism.driver.describe(float(before.driver[index])) for index in (nearest, farthest))
+        told = (f"{a}–{c} runs from {least:.6g} m (at {near}) to {most:.6g} m (at {far}), so B closes at some angle "
+                f"only where {a}{b} + {b}{c} ≥ {least:.6g} m and |{a}{b} − {b}{c}| ≤ "
+                f"{most:.6g} m")
+        ranges = []
+        for k, (name, other, other_name) in enumerate(((f"{a}{b}", bc, f"{b}{c}"), (f"{b}{c}", ab, f"{a}{b}"))):
+            bound, high = max(least - other, other - most), figures_below(most + other)
+            span = f"under {high:.6g} m" if bound <= 0 else f"from {figures_above(bound):.6g} m to {high:.6g} m"
+            if bound <= 0 or figures_above(bound) < high:
+                ranges.append(f"{self.where}.lengths[{k}] ({name}) {span} with {other_name} as given")
+        return f"{told}: {', or '.join(ranges)}" if ranges else told
+
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b, c = self.joints
         return {self.links[0]: (a, b), self.links[1]: (c, b)}
