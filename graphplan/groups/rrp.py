@@ -92,8 +92,7 @@ class RRP(Group):
     def turning_round(self, before) -> str | None:
         """A's farthest from the guide over the turn ``before`` the group: B closes where AB reaches that far."""
         a, b = self.joints
-        guide = before.guide(self.guide)
-        heights = np.abs(cross(guide.u, before.points[a].r - guide.origin.r))
+        heights = self._heights(before)
         farthest = int(np.argmax(heights))
         most = float(heights[farthest])
         if self.length >= most:
@@ -106,8 +105,7 @@ class RRP(Group):
         """Where the crank assembles at no angle: A's nearest to the guide over the angles ``before`` the group
         assembles at, where AB falls short of it."""
         a, b = self.joints
-        guide = before.guide(self.guide)
-        heights = np.abs(cross(guide.u, before.points[a].r - guide.origin.r))
+        heights = self._heights(before)
         nearest = int(np.argmin(heights))
         least = float(heights[nearest])
         if self.length >= least:
@@ -116,6 +114,11 @@ class RRP(Group):
         return (f"{a} comes no nearer the guide than {least:.6g} m (at {place}), farther than {a}{b} = "
                 f"{self.length:.6g} m: {self.where}.length from {figures_above(least):.6g} m up, or the guide "
                 f"nearer {a}")
+
+    def _heights(self, before) -> np.ndarray:
+        """A's distance from the guide at each of ``before``'s driver values."""
+        guide = before.guide(self.guide)
+        return np.abs(cross(guide.u, before.points[self.joints[0]].r - guide.origin.r))
 
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b = self.joints

@@ -61,43 +61,46 @@ class RRR(Group):
         """A–C's nearest and farthest over the turn ``before`` the group: B closes where |AB − BC| ≤ A–C ≤ AB + BC,
         so the crank turns round where both hold at those two, and each length's range for that, the other as
         given."""
-        a, b, c = self.joints
-        spans = np.abs(before.points[a].r - before.points[c].r)
-        nearest, farthest = int(np.argmin(spans)), int(np.argmax(spans))
-        least, most = float(spans[nearest]), float(spans[farthest])
+        least, most, near, far = self._span_of_ac(before)
         ab, bc = self.lengths
         if ab + bc >= most and abs(ab - bc) <= least:
             return None
-        near, far = (before.mechanism.driver.describe(float(before.driver[index])) for index in (nearest, farthest))
+        a, b, c = self.joints
         told = (f"over the turn {a}–{c} runs from {least:.6g} m (at {near}) to {most:.6g} m (at {far}), so the crank "
                 f"turns round only where {a}{b} + {b}{c} > {most:.6g} m and |{a}{b} − {b}{c}| < {least:.6g} m")
-        ranges = []
-        for k, (name, other, other_name) in enumerate(((f"{a}{b}", bc, f"{b}{c}"), (f"{b}{c}", ab, f"{a}{b}"))):
-            bound, high = max(most - other, other - least), figures_below(other + least)
-            # Where A–C never varies from the other length, any length short of twice it closes.
-            span = f"under {high:.6g} m" if bound <= 0 else f"from {figures_above(bound):.6g} m to {high:.6g} m"
-            if bound <= 0 or figures_above(bound) < high:
-                ranges.append(f"{self.where}.lengths[{k}] ({name}) {span} with {other_name} as given")
-        return f"{told}: {', or '.join(ranges)}" if ranges else told
+        return self._ranges_told(told, lambda other: (max(most - other, other - least), other + least))
 
     def nowhere(self, before) -> str | None:
         """Where the crank assembles at no angle: A–C's nearest and farthest over the angles ``before`` the group
         assembles at; B closes at some angle where [|AB − BC|, AB + BC] reaches into them, and each length's range
         for that, the other as given."""
-        a, b, c = self.joints
-        spans = np.abs(before.points[a].r - before.points[c].r)
-        nearest, farthest = int(np.argmin(spans)), int(np.argmax(spans))
-        least, most = float(spans[nearest]), float(spans[farthest])
+        least, most, near, far = self._span_of_ac(before)
         ab, bc = self.lengths
         if ab + bc >= least and abs(ab - bc) <= most:
             return None
-        near, far = (before.mechanism.driver.describe(float(before.driver[index])) for index in (nearest, farthest))
+        a, b, c = self.joints
         told = (f"{a}–{c} runs from {least:.6g} m (at {near}) to {most:.6g} m (at {far}), so B closes at some angle "
-                f"only where {a}{b} + {b}{c} ≥ {least:.6g} m and |{a}{b} − {b}{c}| ≤ "
-                f"{most:.6g} m")
+                f"only where {a}{b} + {b}{c} ≥ {least:.6g} m and |{a}{b} − {b}{c}| ≤ {most:.6g} m")
+        return self._ranges_told(told, lambda other: (max(least - other, other - most), most + other))
+
+    def _span_of_ac(self, before) -> tuple[float, float, str, str]:
+        """A–C's nearest and farthest over ``before``, and the driver's values where they are, in words."""
+        a, _, c = self.joints
+        spans = np.abs(before.points[a].r - before.points[c].r)
+        nearest, farthest = int(np.argmin(spans)), int(np.argmax(spans))
+        near, far = (before.mechanism.driver.describe(float(before.driver[index])) for index in (nearest, farthest))
+        return float(spans[nearest]), float(spans[farthest]), near, far
+
+    def _ranges_told(self, told: str, bounds) -> str:
+        """``told`` with each length's range, the other as given: from ``bounds(other)``'s first to its second,
+        each rounded to four figures inward (under the second where the first is none)."""
+        a, b, c = self.joints
+        ab, bc = self.lengths
         ranges = []
         for k, (name, other, other_name) in enumerate(((f"{a}{b}", bc, f"{b}{c}"), (f"{b}{c}", ab, f"{a}{b}"))):
-            bound, high = max(least - other, other - most), figures_below(most + other)
+            bound, high = bounds(other)
+            high = figures_below(high)
+            # Where A–C never varies from the other length, any length short of twice it closes.
             span = f"under {high:.6g} m" if bound <= 0 else f"from {figures_above(bound):.6g} m to {high:.6g} m"
             if bound <= 0 or figures_above(bound) < high:
                 ranges.append(f"{self.where}.lengths[{k}] ({name}) {span} with {other_name} as given")
