@@ -573,16 +573,21 @@ class Triad(Group):
 
     def _tracks(self, context: Context) -> tuple[Track, Track, Track]:
         """Each leg's track, its centre (and a guide's direction) an array over every position."""
-        count = context.count
+        return self.tracks_over(lambda name: context.point(name).r, context.guide, context.count)
+
+    def tracks_over(self, place, guide_motion, count: int) -> tuple[Track, Track, Track]:
+        """Each leg's track at ``count`` positions: its outer joint where ``place`` (a joint's name) puts it, complex,
+        and a sliding leg's guide as ``guide_motion`` moves it.  A solve's context gives both, and so does the motion
+        of the groups before the triad, which :mod:`.triad_legs` reads its legs' bounds off."""
         tracks = []
         for n, (outer, _, _) in enumerate(self.arms()):
-            centre = np.broadcast_to(np.asarray(context.point(outer).r, dtype=complex), (count,))
+            centre = np.broadcast_to(np.asarray(place(outer), dtype=complex), (count,))
             if n in self.turning_legs:
                 tracks.append(Track(centre, self.lengths[n]))
             elif self.leg_slots[n] is not None:
                 tracks.append(Track(centre, slot=self.slot_direction(n)))
             else:
-                guide = context.guide(self.leg_guides[n])
+                guide = guide_motion(self.leg_guides[n])
                 tracks.append(Track(centre, u=np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))))
         return tuple(tracks)  # type: ignore[return-value]
 

@@ -56,7 +56,7 @@ def leg_reaches(triad, before, somewhere: bool = False) -> tuple[LegReach, ...]:
     """Each turning leg's :class:`LegReach` over ``before``, the motion of the groups before the triad over the
     whole turn (with ``somewhere``, over the angles they assemble at), in the scene's assembly; the ternary link's
     corners run the way the scene's sketch has them."""
-    tracks = _tracks(triad, before)
+    tracks = triad.tracks_over(lambda name: before.points[name].r, before.guide, before.count)
     local = triad.local_corners(triad.sketched_turn)
     count = len(before.driver)
     coarse = np.unique(np.linspace(0, count - 1, _COARSE_ANGLES + 1).round().astype(int))
@@ -106,7 +106,7 @@ def _at(distances: tuple[np.ndarray, np.ndarray], bound: tuple[int, bool]) -> in
 def _distances(tracks, local, leg: int, angles: np.ndarray, turns: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The nearest and farthest (m) the free ``leg``'s corner comes to its outer joint over the ternary link's
     ``turns`` (rad), at each of the crank's samples ``angles``; NaN where the other two legs close at no turn."""
-    from .triad import Track, _carried_back, _meet  # the triad's own geometry, which imports this module
+    from .triad import _carried_back, _meet  # the triad's own geometry, which imports this module
 
     held = [n for n in range(3) if n != leg]
     nearest = np.empty(len(angles))
@@ -116,8 +116,7 @@ def _distances(tracks, local, leg: int, angles: np.ndarray, turns: np.ndarray) -
     rotation = np.exp(1j * turns)[None, :]
     for first in range(0, len(angles), rows):
         taken = angles[first:first + rows]
-        shaped = [Track(np.asarray(track.centre)[taken, None], track.radius,
-                        None if track.u is None else np.asarray(track.u)[taken, None], track.slot) for track in tracks]
+        shaped = [track.taken(taken[:, None]) for track in tracks]  # a column of angles against a row of turns
         spans = []
         for sign in (1, -1):
             one, other = (_carried_back(shaped[n], local[n] * rotation, rotation) for n in held)
@@ -130,23 +129,6 @@ def _distances(tracks, local, leg: int, angles: np.ndarray, turns: np.ndarray) -
         nearest[first:first + rows] = np.where(closes, np.min(np.where(finite, both, np.inf), axis=1), np.nan)
         farthest[first:first + rows] = np.where(closes, np.max(np.where(finite, both, -np.inf), axis=1), np.nan)
     return nearest, farthest
-
-
-def _tracks(triad, before) -> tuple:
-    """Each leg's track over ``before``'s samples."""
-    from .triad import Track
-
-    count = len(before.driver)
-    tracks = []
-    for n, (outer, _, _) in enumerate(triad.arms()):
-        centre = np.broadcast_to(before.points[outer].r, (count,))
-        if n in triad.turning_legs:
-            tracks.append(Track(centre, triad.lengths[n]))
-        elif triad.leg_slots[n] is not None:
-            tracks.append(Track(centre, slot=triad.slot_direction(n)))
-        else:
-            tracks.append(Track(centre, u=np.broadcast_to(before.guide(triad.leg_guides[n]).u, (count,))))
-    return tuple(tracks)
 
 
 __all__ = ["LegReach", "leg_reaches"]
