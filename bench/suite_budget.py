@@ -39,7 +39,7 @@ STAGES = (
     ("graphplan.render.sheet", "fewest_sheets_length_scale", "choosing μl (a scene without drawing.length_scale)"),
     ("graphplan.deliverables", "drawings", "a run's drawings laid out"),
     ("graphplan.render.sheet", "course_panels", "the course sheets' panels laid out (in a run or a test)"),
-    ("graphplan.deliverables", "encoded", "a run's drawings written as SVG and the other formats"),
+    ("graphplan.deliverables", "encoded", "a run's drawings written as SVG and DXF (PNG and PDF rendered after)"),
     ("graphplan.deliverables", "tables", "a run's note and tables"),
     ("graphplan.deliverables", "figures", "a run's matplotlib plots"),
     ("graphplan.deliverables", "vibration_figures", "a run's vibration plots"),
@@ -47,6 +47,7 @@ STAGES = (
     ("graphplan.report.motion_plots", "motion_figure", "the plot of the machine's motion"),
     ("graphplan.report.pdf", "note_pdf", "the note's PDF (WeasyPrint)"),
     ("graphplan.report.word", "note_docx", "the note as docx"),
+    ("graphplan.render.export", "rendered_all", "a run's PNG and PDF rendered at once (the PNG in threads)"),
     ("graphplan.render.export", "svg_to_png", "a drawing or plot as PNG (cairosvg)"),
     ("graphplan.render.export", "svg_to_pdf", "a drawing or plot as PDF (cairosvg)"),
 )

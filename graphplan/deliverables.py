@@ -24,6 +24,7 @@ from .errors import SceneError
 from .locale import strings
 from .machine_dynamics import MachineDynamics
 from .reader import check_choice, check_choices
+from .render import export
 from .render.primitives import Layer, in_language
 
 # The scene, the analysis and what reads them are imported where they are used: the command line's parser takes
@@ -635,28 +636,19 @@ def vibration_figures(scene: Scene) -> dict[str, str]:
     return found
 
 
-def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes]:
-    """The files of one drawing in each of ``formats``."""
+def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes | export.Raster]:
+    """The files of one drawing in each of ``formats``, its PNG and PDF as rasters still to render: a run renders
+    all its drawings' and plots' at once (:func:`~graphplan.render.export.rendered_all`)."""
     from .render.svg import to_svg
 
     svg = to_svg(drawing.layers, page=drawing.page) if drawing.page else to_svg(drawing.layers)
-    writers: dict[str, Callable[[], str | bytes]] = {
+    writers: dict[str, Callable[[], str | bytes | export.Raster]] = {
         "svg": lambda: svg,
-        "png": lambda: _rendered(svg, "png"),
-        "pdf": lambda: _rendered(svg, "pdf"),
+        "png": lambda: export.Raster(svg, "png"),
+        "pdf": lambda: export.Raster(svg, "pdf"),
         "dxf": lambda: _dxf(drawing),
     }
     return {f"{drawing.stem}.{kind}": writers[kind]() for kind in formats}
-
-
-def _rendered(svg: str, kind: str, dpi: float | None = None) -> bytes:
-    """An SVG document as PNG (at ``dpi``, else the export's own) or PDF (cairosvg, imported only when one is asked
-    for)."""
-    from .render import export
-
-    if kind == "png":
-        return export.svg_to_png(svg) if dpi is None else export.svg_to_png(svg, dpi)
-    return export.svg_to_pdf(svg)
 
 
 def _dxf(drawing: Drawing) -> bytes:
@@ -855,8 +847,13 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # By the force sheet's file, whether it is written or not: the note works its lever at that file's μV.
     sheet_levers = {_file_alone(lever.drawing): (lever.sheet, lever.scale) for drawing in made
                     for lever in drawing.levers}
+    rasters: dict[str, export.Raster] = {}
     for drawing in made:
-        found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
+        for name, content in encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]).items():
+            if isinstance(content, export.Raster):
+                rasters[name] = content
+            else:
+                found[name] = content
         if drawing.lever_scale is not None:
             lever_scales[f"{drawing.stem}.svg"] = drawing.lever_scale
     plots = figures(scene, analysis, pieces, dynamics, say=say)
@@ -869,8 +866,11 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # the export's 150, an A1 sheet at 300 dpi being 70 million pixels.
     for name, svg in plots.items():
         if name.endswith(".svg"):
-            found.update({f"{name[:-4]}.{kind}": _rendered(svg, kind, PLOT_DPI)
-                          for kind in formats if kind in ("png", "pdf")})
+            rasters.update({f"{name[:-4]}.{kind}": export.Raster(svg, kind, PLOT_DPI if kind == "png" else None)
+                            for kind in formats if kind in ("png", "pdf")})
+    if rasters:
+        say("rendering the drawings and plots as " + " and ".join(kind for kind in formats if kind in ("png", "pdf")))
+        found.update(export.rendered_all(rasters))
     # The note shows the drawings and plots written beside it, each in the section it illustrates.
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
     if {"note", "errors", "forces"} & set(pieces):

@@ -32,6 +32,7 @@ import io
 import math
 import zipfile
 from collections.abc import Collection, Mapping
+from dataclasses import dataclass
 
 from docx import Document as WordDocument
 from docx.enum.style import WD_STYLE_TYPE
@@ -43,6 +44,7 @@ from docx.shared import Mm, Pt, Twips
 from lxml.etree import SubElement
 from markdown_it.tree import SyntaxTreeNode
 
+from ..render import export
 from ..render.primitives import FONT_SIZE_PER_CAP, text_width
 from .markdown import picture_source, plain, table_parts, tree
 from .symbols import Symbol, pieces
@@ -89,7 +91,8 @@ def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str
     _set_page(document)
     _set_styles(document, locale)
     _number_pages(document)
-    _Writer(document, pictures or {}, verbatim).blocks(tree(markdown_text).children)
+    parsed = tree(markdown_text)
+    _Writer(document, _figures(parsed, pictures or {}), verbatim).blocks(parsed.children)
     properties = document.core_properties
     properties.title = _shortened(" ".join(title.split()), _MOST_PROPERTY_CHARACTERS)
     properties.language = _LANGUAGES.get(locale, locale)
@@ -163,6 +166,27 @@ def _set_styles(document, locale: str) -> None:
     tag.set(qn("w:eastAsia"), _LANGUAGES["zh"] if locale == "zh" else language)
 
 
+@dataclass(frozen=True)
+class _Figure:
+    """A figure's drawing as the document holds it: its PNG, and its width on the page."""
+
+    png: bytes
+    width_mm: float
+
+
+def _figures(note: SyntaxTreeNode, pictures: Mapping[str, str]) -> dict[str, _Figure]:
+    """The drawings the note's figures show, each at its size or smaller to fit the page, rendered all at once."""
+    shown = sorted({source for node in note.walk() if (source := picture_source(node)) in pictures})
+    widths: dict[str, float] = {}
+    rasters: dict[str, export.Raster] = {}
+    for name in shown:
+        width, height = export.svg_size_mm(pictures[name])
+        scale = min(1.0, _LINE_MM / width, _PICTURE_HEIGHT_MM / height)
+        widths[name] = width * scale
+        rasters[name] = export.Raster(pictures[name], "png", _PICTURE_DPI * scale)
+    return {name: _Figure(png, widths[name]) for name, png in export.rendered_all(rasters).items()}
+
+
 class _Writer:
     """Writes the blocks of the note's syntax tree into the document, in order.
 
@@ -171,7 +195,7 @@ class _Writer:
     searched an element's every possible child to place each property (a shaper's note took 6 s so).
     """
 
-    def __init__(self, document, pictures: Mapping[str, str], verbatim: Collection[str] = ()) -> None:
+    def __init__(self, document, pictures: Mapping[str, _Figure], verbatim: Collection[str] = ()) -> None:
         self.document = document
         self.pictures = pictures
         self.verbatim = tuple(verbatim)
@@ -226,16 +250,12 @@ class _Writer:
             else:
                 raise ValueError(f"the note has a {node.type}, which its Word document does not write")
 
-    def picture(self, svg: str) -> None:
-        """The drawing centred, at its size or smaller to fit the page, kept on the page of its caption."""
-        from ..render.export import svg_size_mm, svg_to_png
-
-        width, height = svg_size_mm(svg)
-        scale = min(1.0, _LINE_MM / width, _PICTURE_HEIGHT_MM / height)
+    def picture(self, figure: _Figure) -> None:
+        """The drawing centred, kept on the page of its caption."""
         paragraph = self.document.add_paragraph()
         paragraph.alignment = WD_ALIGN_PARAGRAPH.CENTER
         paragraph.paragraph_format.keep_with_next = True
-        paragraph.add_run().add_picture(io.BytesIO(svg_to_png(svg, dpi=_PICTURE_DPI * scale)), width=Mm(width * scale))
+        paragraph.add_run().add_picture(io.BytesIO(figure.png), width=Mm(figure.width_mm))
 
     def table(self, node: SyntaxTreeNode) -> None:
         parts = table_parts(node)
