@@ -10,6 +10,7 @@ it, which the placement of named points needs.
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
@@ -293,7 +294,7 @@ def _check_point_names(scene: Scene) -> dict[str, str]:
             named_at.setdefault(name, _new_joint_where(solver, name))
     for spec in scene.points:
         if spec.name in named_at:
-            raise SceneError(spec.where, f"{spec.name!r} is already a joint's name")
+            raise _named_twice(scene, spec.name, spec.where, named_at)
         named_at[spec.name] = spec.where
     seen: dict[str, str] = {}
     for name, where in named_at.items():
@@ -305,6 +306,28 @@ def _check_point_names(scene: Scene) -> dict[str, str]:
                              f"{contrast(name, other)}: name the two apart")
     _check_plan_letters(scene, named_at)
     return named_at
+
+
+def _named_twice(scene: Scene, name: str, where: str, named_at: dict[str, str]) -> SceneError:
+    """A named point given a frame point's or a joint's name, told with the key that names it first; where a group
+    places the joint and joins to a point that nothing places, as a group whose joints were typed in each other's
+    places does (an RRP's ["F", "E"] for ["E", "F"]), with its joints in their places."""
+    if name in scene.frame_points:
+        return SceneError(where, f"{name!r} is already a frame point's name ({named_at[name]}): name the point apart")
+    placing = next(solver for solver in (scene.driver, *scene.groups) if name in solver.new_joints())
+    told = f"{name!r} is already the name of a joint {placing.where} places ({named_at[name]})"
+    placed = set(scene.frame_points) | {spec.name for spec in scene.points} | {
+        joint for solver in (scene.driver, *scene.groups) for joint in solver.new_joints()}
+    unplaced = [joint for joint in placing.known_joints() if joint not in placed]
+    joints = getattr(placing, "joints", None)
+    if len(unplaced) != 1 or joints is None:
+        return SceneError(where, f"{told}: name the point apart")
+    swapped = [unplaced[0] if joint == name else name if joint == unplaced[0] else joint for joint in joints]
+    # A list of names in JSON is one in TOML too.
+    return SceneError(where, f"{told}, and {unplaced[0]!r}, which {placing.where} joins to, is placed nowhere: its "
+                      f"joints typed in each other's places? {placing.where}.joints = "
+                      f"{json.dumps(swapped, ensure_ascii=False)} joins it to {name} and places {unplaced[0]}; else "
+                      "name the point apart")
 
 
 # A point's or a frame line's name enters the note's vector equations, symbols and tables in a hundred places

@@ -637,9 +637,10 @@ CASES: list[Case] = [
     Case("point-offset-inf", {"points.E.offset": INF}, "points.E.offset", "must be a finite number (got inf)"),
     Case("point-unknown-key", {"points.S3.ofset": 0.1}, "points.S3.ofset", "unknown key; did you mean 'offset'?"),
     Case("point-named-like-joint", {"points.B": {"link": 3, "from": "A", "toward": "E", "at": 0.1}}, "points.B",
-         "'B' is already a joint's name", stage="build"),
+         "'B' is already the name of a joint groups[0] places (groups[0].joints[1]): name the point apart",
+         stage="build"),
     Case("point-named-like-frame-point", {"points.C": {"link": 3, "from": "A", "toward": "B", "at": 0.1}}, "points.C",
-         "'C' is already a joint's name", stage="build"),
+         "'C' is already a frame point's name (frame.points.C): name the point apart", stage="build"),
     Case("point-on-unknown-link", {"points.S3.link": 9}, "points.S3.link",
          "no link 9 in the mechanism; links are 1, 2, 3, 4 (got 9)", stage="build"),
     Case("point-from-not-on-link", {"points.S3.from": "C"}, "points.S3.from",
@@ -955,6 +956,24 @@ def test_group_uses_a_joint_found_only_by_a_later_group() -> None:
     stage, error = first_error(two_groups(second, second_first=True))
     assert stage == "build" and type(error) is SceneError
     assert str(error) == f"groups[0].joints[0]: 'B' {UNKNOWN_AT_THIS_STAGE}"
+
+
+def test_a_group_whose_joints_were_typed_in_each_others_places_is_told_them_in_their_places() -> None:
+    """An RRP after the four-bar joined to a point E of the coupler, its joints typed ["F", "E"]: E, placed by
+    [points], was refused only as "already a joint's name". The refusal names the group and gives its joints in their
+    places, and the scene with them so builds."""
+    second = {"kind": "RRP", "links": [5, 6], "joints": ["F", "E"], "length": 0.6,
+              "guide": {"through": [0.0, -0.2], "angle": 0.0}, "assembly": "forward"}
+    point = {"link": 3, "from": "A", "toward": "B", "at": 0.3, "offset": 0.1}
+    scene = variant(RATCHET, {"groups": [copy.deepcopy(RATCHET["groups"][0]), second], "points.E": point})
+    stage, error = first_error(to_toml(scene))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == ("""points.E: 'E' is already the name of a joint groups[1] places (groups[1].joints[1]), """
+                          """and 'F', which groups[1] joins to, is placed nowhere: its joints typed in each other's """
+                          """places? groups[1].joints = ["E", "F"] joins it to E and places F; else name the point """
+                          """apart""")
+    second["joints"] = ["E", "F"]
+    graphplan.build(scene_module.loads(to_toml(scene)))
 
 
 def test_second_group_reuses_a_link() -> None:
