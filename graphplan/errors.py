@@ -67,6 +67,11 @@ def as_written(value: object, nested: bool = False) -> str:
 _LONGEST_INTEGER_SHOWN = 10 ** 30
 
 
+def listed(names: list[str] | tuple[str, ...]) -> str:
+    """Names as a sentence lists them: ``A``, ``A and C``, ``A, C and E``."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
+
+
 def _digits(value: int) -> str:
     """How many decimal digits ``value`` has; beyond what Python turns into a string, roughly."""
     try:

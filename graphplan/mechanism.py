@@ -10,13 +10,14 @@ it, which the placement of named points needs.
 
 from __future__ import annotations
 
-import json
+import dataclasses
+import itertools
 import math
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .errors import SceneError, as_written
+from .errors import GraphplanError, SceneError, as_written, listed
 from .groups import Driver, Group, Guide
 from .groups.sliding import guide_link
 from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
@@ -280,9 +281,30 @@ def _unknown_joint(solver: Driver | Group, name: str, known: set[str], named_at:
     # A one-letter name is no close match of another to difflib, but a joint typed in the other case is a slip.
     close = [other for other in sorted(known) if other.casefold() == name.casefold()] or difflib.get_close_matches(
         name, sorted(known), n=1, cutoff=0.5)
-    hint = f"; did you mean {close[0]!r}?" if close else ""
+    hint = f"; did you mean {close[0]!r}?" if close else _joints_in_place(solver, known)
     return SceneError(where, f"{name!r} is not known at this stage: it must be a frame point, a joint of the driver "
                              f"or of an earlier group, or a named point of a link already found{hint}")
+
+
+def _joints_in_place(solver: Driver | Group, known: set[str]) -> str:
+    """Where two of a group's joints typed in each other's places leave it joined to a point it places itself (an
+    RRR's ["B", "A", "C"]), the two swapped back: the order that joins it to known points alone."""
+    joints = getattr(solver, "joints", None)
+    if joints is None:
+        return ""
+    for i, j in itertools.combinations(range(len(joints)), 2):
+        swapped = list(joints)
+        swapped[i], swapped[j] = swapped[j], swapped[i]
+        try:
+            in_place = dataclasses.replace(solver, joints=tuple(swapped))
+        except (GraphplanError, ValueError):
+            continue
+        if set(in_place.known_joints()) <= known:
+            placed = " and ".join(in_place.new_joints())
+            return (f"; its joints typed in each other's places? {solver.where}.joints = "
+                    f"{as_written(swapped)} joins it to {listed(in_place.known_joints())} and "
+                    f"places {placed}")
+    return ""
 
 
 def _check_point_names(scene: Scene) -> dict[str, str]:
@@ -323,10 +345,8 @@ def _named_twice(scene: Scene, name: str, where: str, named_at: dict[str, str]) 
     if len(unplaced) != 1 or joints is None:
         return SceneError(where, f"{told}: name the point apart")
     swapped = [unplaced[0] if joint == name else name if joint == unplaced[0] else joint for joint in joints]
-    # A list of names in JSON is one in TOML too.
     return SceneError(where, f"{told}, and {unplaced[0]!r}, which {placing.where} joins to, is placed nowhere: its "
-                      f"joints typed in each other's places? {placing.where}.joints = "
-                      f"{json.dumps(swapped, ensure_ascii=False)} joins it to {name} and places {unplaced[0]}; else "
+                      f"joints typed in each other's places? {placing.where}.joints = {as_written(swapped)} joins it to {name} and places {unplaced[0]}; else "
                       "name the point apart")
 
 

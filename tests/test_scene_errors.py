@@ -976,6 +976,16 @@ def test_a_group_whose_joints_were_typed_in_each_others_places_is_told_them_in_t
     graphplan.build(scene_module.loads(to_toml(scene)))
 
 
+@pytest.mark.parametrize("typed", [["B", "A", "C"], ["A", "C", "B"]])
+def test_an_rrr_whose_joints_were_typed_in_each_others_places_is_told_them_in_their_places(typed) -> None:
+    scene = variant(RATCHET, {"groups": [{**copy.deepcopy(RATCHET["groups"][0]), "joints": typed}]})
+    stage, error = first_error(to_toml(scene))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == (f"groups[0].joints[{typed.index('B')}]: 'B' {UNKNOWN_AT_THIS_STAGE}; its joints typed in "
+                          """each other's places? groups[0].joints = ["A", "B", "C"] joins it to A and C and """
+                          "places B")
+
+
 def test_second_group_reuses_a_link() -> None:
     second = {"kind": "RRR", "links": [4, 5], "joints": ["B", "D", "C"], "lengths": [0.3, 0.4], "assembly": "left"}
     stage, error = first_error(two_groups(second))

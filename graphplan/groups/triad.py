@@ -40,7 +40,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import AssemblyError, SceneError, SingularPositionError
+from ..errors import AssemblyError, SceneError, SingularPositionError, listed
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line, cross_lines
 from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
@@ -177,10 +177,10 @@ class Triad(Group):
         if isinstance(raw_lengths, list) and len(raw_lengths) != len(turning):
             sliding = [f"{joints[2 * n]}{joints[2 * n + 1]}" for n in range(3) if n not in turning]
             if not turning:
-                raise SceneError(table.where("lengths"), f"must be left out: the legs {_listed(sliding)} all slide",
+                raise SceneError(table.where("lengths"), f"must be left out: the legs {listed(sliding)} all slide",
                                  raw_lengths)
             why = "" if not sliding else f" (the leg {sliding[0]} slides)" if len(sliding) == 1 else \
-                f" (the legs {_listed(sliding)} slide)"
+                f" (the legs {listed(sliding)} slide)"
             raise SceneError(table.where("lengths"), f"must have {len(turning)} entr{'y' if len(turning) == 1 else 'ies'}, {bars}{why}, not "
                                                      f"{len(raw_lengths)}", raw_lengths)
         lengths = [0.0, 0.0, 0.0]
@@ -749,11 +749,11 @@ class Triad(Group):
         bars = [f"{arms[n][0]}{arms[n][1]}" for n in self.turning_legs]
         pins = [arms[n][1] for n in self.sliding_legs]
         blocks = [arms[n][0] for n in self.slotted_legs]
-        parts = [("the line " if len(bars) == 1 else "the lines ") + _listed(bars)] if bars else []
+        parts = [("the line " if len(bars) == 1 else "the lines ") + listed(bars)] if bars else []
         if pins:
-            parts.append(("the normal to the guide at " if len(pins) == 1 else "the normals to the guides at ") + _listed(pins))
+            parts.append(("the normal to the guide at " if len(pins) == 1 else "the normals to the guides at ") + listed(pins))
         if blocks:
-            parts.append(("the normal to the slot at " if len(blocks) == 1 else "the normals to the slots at ") + _listed(blocks))
+            parts.append(("the normal to the slot at " if len(blocks) == 1 else "the normals to the slots at ") + listed(blocks))
         return " and ".join(parts)
 
     # The plans: Assur's special point Σ, then F, then B and D by similarity.
@@ -1188,10 +1188,6 @@ def _read_slotted_legs(table: Table, joints: tuple[str, ...], leg_guides) -> tup
         legs[leg] = radians_within_a_turn(spec.number("angle", 0.0))
         spec.done()
     return legs[0], legs[1], legs[2]
-
-
-def _listed(names: list[str]) -> str:
-    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
 
 
 def _at_distance(track: Track, point, distance: float, sign: int):
