@@ -122,6 +122,21 @@ def test_a_bad_triad_is_refused_with_its_key(old, new, where, message):
     assert caught.value.where == where and message in str(caught.value)
 
 
+@pytest.mark.parametrize("swap", [(0, 1), (1, 2), (0, 5)])
+def test_a_triad_whose_joints_were_typed_in_each_others_places_is_told_them_in_their_places(swap):
+    """The sketch names B, D and F; the joints typed with an outer and an inner one swapped make another inner joint
+    in place of one it names. The refusal gives the joints in their places."""
+    joints = ["A", "B", "C", "D", "E", "F"]
+    typed = list(joints)
+    typed[swap[0]], typed[swap[1]] = typed[swap[1]], typed[swap[0]]
+    with pytest.raises(SceneError) as caught:
+        _scene('joints  = ["A", "B", "C", "D", "E", "F"]', "joints = [" + ", ".join(f'"{j}"' for j in typed) + "]")
+    stray = next(name for name in typed if name in "BDF" and typed.index(name) % 2 == 0)
+    assert caught.value.where == f"groups[0].near.{stray}"
+    assert str(caught.value).endswith("""; the joints typed in each other's places? groups[0].joints = """
+                                      """["A", "B", "C", "D", "E", "F"] makes B, D and F the inner joints""")
+
+
 def test_a_triad_on_the_frame_alone_is_refused_and_nothing_is_written(tmp_path, capsys):
     # A mistyped joint: the leg AB pinned at the crank's pivot O makes the triad a truss on the frame.
     scene = tmp_path / "truss.toml"

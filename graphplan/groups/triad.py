@@ -40,7 +40,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import AssemblyError, SceneError, SingularPositionError, listed
+from ..errors import AssemblyError, SceneError, SingularPositionError, as_written, listed
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line, cross_lines
 from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
@@ -205,7 +205,8 @@ class Triad(Group):
         near = []
         for name in near_table.data:
             if name not in inner:
-                raise SceneError(near_table.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
+                raise SceneError(near_table.where(name), f"must name an inner joint of the triad: {', '.join(inner)}"
+                                 f"{_inner_swapped(table.where('joints'), joints, list(near_table.data))}")
             x, y = check_xy(near_table.raw(name), near_table.where(name))
             near.append((name, complex(x, y)))
         missing = [name for name in inner if name not in dict(near)]
@@ -1141,6 +1142,19 @@ class Triad(Group):
                 continue
             board.react(f"R{link}{t}", inner, link, t, -on_binary[n])
         board.finish_group(self.label, self.links, polygon.record())
+
+
+def _inner_swapped(where: str, joints: tuple[str, ...], sketched: list[str]) -> str:
+    """Where the sketch names the inner joints but for one, an outer joint in its place, as ``joints`` typed with the
+    two in each other's places name them (["B", "A", "C", "D", "E", "F"]), the joints in their places."""
+    inner = (joints[1], joints[3], joints[5])
+    stray = [name for name in sketched if name in joints and name not in inner]
+    left = [name for name in inner if name not in sketched]
+    if len(sketched) != 3 or len(stray) != 1 or len(left) != 1:
+        return ""
+    swapped = [stray[0] if name == left[0] else left[0] if name == stray[0] else name for name in joints]
+    return (f"; the joints typed in each other's places? {where} = {as_written(swapped)} makes "
+            f"{listed(swapped[1::2])} the inner joints")
 
 
 def _legs_in(table: Table, key: str, joints: tuple[str, ...], what: str) -> list[tuple[int, str, Table]]:
