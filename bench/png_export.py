@@ -44,7 +44,7 @@ def timed(work) -> tuple[float, object]:
 def main() -> None:
     sys.path.insert(0, str(ROOT))
     from graphplan.render import export
-    from graphplan.render.export import Raster, rendered_all
+    from graphplan.render.export import Rendering, rendered_all
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3)
@@ -52,19 +52,19 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as folder:
         svgs = drawings(Path(folder) / "run")
     cores = export._cores()
-    images = {name: Raster(svg, "png") for name, svg in svgs.items()}
-    documents = {name: Raster(svg, "pdf") for name, svg in svgs.items()}
+    images = {name: Rendering(svg, "png") for name, svg in svgs.items()}
+    documents = {name: Rendering(svg, "pdf") for name, svg in svgs.items()}
     times: dict[str, list[float]] = {"png one by one": [], "png at once": [], "pdf one by one": [],
                                      "pdf in threads": []}
     for _ in range(rounds):
-        alone, one_by_one = timed(lambda: {name: raster.rendered() for name, raster in images.items()})
+        alone, one_by_one = timed(lambda: {name: rendering.rendered() for name, rendering in images.items()})
         together, at_once = timed(lambda: rendered_all(images))
         assert at_once == one_by_one, "the PNG rendered at once differ from those rendered one by one"
         times["png one by one"].append(alone)
         times["png at once"].append(together)
-        times["pdf one by one"].append(timed(lambda: [raster.rendered() for raster in documents.values()])[0])
+        times["pdf one by one"].append(timed(lambda: [rendering.rendered() for rendering in documents.values()])[0])
         with ThreadPoolExecutor(cores) as pool:
-            times["pdf in threads"].append(timed(lambda: list(pool.map(Raster.rendered, documents.values())))[0])
+            times["pdf in threads"].append(timed(lambda: list(pool.map(Rendering.rendered, documents.values())))[0])
     medians = {way: statistics.median(seconds) for way, seconds in times.items()}
     figures = {
         "scene": SCENE, "drawings": len(svgs), "cores": cores, "rounds": rounds,

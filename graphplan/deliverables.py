@@ -636,16 +636,16 @@ def vibration_figures(scene: Scene) -> dict[str, str]:
     return found
 
 
-def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes | export.Raster]:
-    """The files of one drawing in each of ``formats``, its PNG and PDF as rasters still to render: a run renders
+def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes | export.Rendering]:
+    """The files of one drawing in each of ``formats``, its PNG and PDF still to render: a run renders
     all its drawings' and plots' at once (:func:`~graphplan.render.export.rendered_all`)."""
     from .render.svg import to_svg
 
     svg = to_svg(drawing.layers, page=drawing.page) if drawing.page else to_svg(drawing.layers)
-    writers: dict[str, Callable[[], str | bytes | export.Raster]] = {
+    writers: dict[str, Callable[[], str | bytes | export.Rendering]] = {
         "svg": lambda: svg,
-        "png": lambda: export.Raster(svg, "png"),
-        "pdf": lambda: export.Raster(svg, "pdf"),
+        "png": lambda: export.Rendering(svg, "png"),
+        "pdf": lambda: export.Rendering(svg, "pdf"),
         "dxf": lambda: _dxf(drawing),
     }
     return {f"{drawing.stem}.{kind}": writers[kind]() for kind in formats}
@@ -847,11 +847,11 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # By the force sheet's file, whether it is written or not: the note works its lever at that file's μV.
     sheet_levers = {_file_alone(lever.drawing): (lever.sheet, lever.scale) for drawing in made
                     for lever in drawing.levers}
-    rasters: dict[str, export.Raster] = {}
+    renderings: dict[str, export.Rendering] = {}
     for drawing in made:
         for name, content in encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]).items():
-            if isinstance(content, export.Raster):
-                rasters[name] = content
+            if isinstance(content, export.Rendering):
+                renderings[name] = content
             else:
                 found[name] = content
         if drawing.lever_scale is not None:
@@ -866,11 +866,11 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # the export's 150, an A1 sheet at 300 dpi being 70 million pixels.
     for name, svg in plots.items():
         if name.endswith(".svg"):
-            rasters.update({f"{name[:-4]}.{kind}": export.Raster(svg, kind, PLOT_DPI if kind == "png" else None)
+            renderings.update({f"{name[:-4]}.{kind}": export.Rendering(svg, kind, PLOT_DPI if kind == "png" else None)
                             for kind in formats if kind in ("png", "pdf")})
-    if rasters:
+    if renderings:
         say("rendering the drawings and plots as " + " and ".join(kind for kind in formats if kind in ("png", "pdf")))
-        found.update(export.rendered_all(rasters))
+        found.update(export.rendered_all(renderings))
     # The note shows the drawings and plots written beside it, each in the section it illustrates.
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
     if {"note", "errors", "forces"} & set(pieces):

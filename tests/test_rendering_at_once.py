@@ -15,7 +15,7 @@ from console import without_progress
 
 from graphplan.cli import main
 from graphplan.render import export
-from graphplan.render.export import Raster, rendered_all, svg_to_pdf, svg_to_png
+from graphplan.render.export import Rendering, rendered_all, svg_to_pdf, svg_to_png
 
 pytest.importorskip("cairosvg")
 
@@ -34,10 +34,10 @@ PAGES = {f"page_{k}.{kind}": _page(60 + 10 * k, f"Положение {k} 位置"
 
 def test_the_files_rendered_at_once_are_those_rendered_one_by_one(monkeypatch):
     monkeypatch.setattr(export, "_cores", lambda: 3)
-    rasters = {name: Raster(svg, name[-3:], 120.0 if name.startswith("page_2") and name.endswith("png") else None)
+    renderings = {name: Rendering(svg, name[-3:], 120.0 if name.startswith("page_2") and name.endswith("png") else None)
                for name, svg in PAGES.items()}
-    found = rendered_all(rasters)
-    assert list(found) == list(rasters)
+    found = rendered_all(renderings)
+    assert list(found) == list(renderings)
     for name, svg in PAGES.items():
         alone = svg_to_pdf(svg) if name.endswith("pdf") else svg_to_png(svg, 120.0 if name == "page_2.png" else 150.0)
         assert found[name] == alone, name
@@ -59,7 +59,7 @@ def test_the_png_are_rendered_in_threads_and_the_pdf_in_the_callers(monkeypatch)
     monkeypatch.setattr(export, "svg_to_png", png_noted)
     monkeypatch.setattr(export, "svg_to_pdf", pdf_noted)
     monkeypatch.setattr(export, "_cores", lambda: 2)
-    rendered_all({name: Raster(svg, name[-3:]) for name, svg in PAGES.items()})
+    rendered_all({name: Rendering(svg, name[-3:]) for name, svg in PAGES.items()})
     threads = {key[-3:]: set() for key in where}
     for key, name in where.items():
         threads[key[-3:]].add(name)
@@ -68,7 +68,7 @@ def test_the_png_are_rendered_in_threads_and_the_pdf_in_the_callers(monkeypatch)
     # One core: no thread is started for them.
     where.clear()
     monkeypatch.setattr(export, "_cores", lambda: 1)
-    rendered_all({name: Raster(svg, name[-3:]) for name, svg in PAGES.items() if name.endswith("png")})
+    rendered_all({name: Rendering(svg, name[-3:]) for name, svg in PAGES.items() if name.endswith("png")})
     assert set(where.values()) == {threading.current_thread().name}
 
 
@@ -86,9 +86,9 @@ def test_a_file_that_fails_stops_the_files_not_begun(monkeypatch):
 
     monkeypatch.setattr(export, "svg_to_png", failing_first)
     monkeypatch.setattr(export, "_cores", lambda: 2)
-    rasters = {f"{k}.png": Raster(("failing" if k == 0 else "") + "x" * (1000 - k), "png") for k in range(40)}
+    renderings = {f"{k}.png": Rendering(("failing" if k == 0 else "") + "x" * (1000 - k), "png") for k in range(40)}
     with pytest.raises(ValueError, match="cairo could not draw it"):
-        rendered_all(rasters)
+        rendered_all(renderings)
     assert 1 <= len(begun) <= 4
 
 

@@ -124,7 +124,7 @@ def _with_resolution(png: bytes, dpi: float) -> bytes:
 
 
 @dataclass(frozen=True)
-class Raster:
+class Rendering:
     """A PNG (at ``dpi``; None: :data:`DEFAULT_DPI`) or a PDF still to be rendered from an SVG document."""
 
     svg: str
@@ -137,27 +137,29 @@ class Raster:
         return svg_to_pdf(self.svg)
 
 
-def rendered_all(rasters: Mapping[str, Raster]) -> dict[str, bytes]:
-    """Each raster's file, by its name: the PNG in threads, one a core; the PDF one by one.
+def rendered_all(renderings: Mapping[str, Rendering]) -> dict[str, bytes]:
+    """Each file rendered, by its name: the PNG in threads, one a core; the PDF one by one.
 
     A sheet's PNG takes about a second, two thirds of it in cairo's compression, which lets other threads run
     meanwhile: an A1 run's 41 PNG took 11.7 s one by one, 7.3 s in two threads on two cores. An A3 run's 57 PDF took
     3.5 s one by one and 4.5–5.2 s in two threads: nine tenths of a PDF's time is cairosvg's own Python (cairo
-    only records the drawing), which threads take in turns and contend for (``bench/png_export.py``). Threads, not processes: a process started afresh imports the script that started it again,
-    and a user's script without a ``__main__`` guard would run itself over; a forked one may deadlock on a lock that
-    another thread (a notebook kernel's) held.
+    only records the drawing), which threads take in turns and contend for (``bench/png_export.py``).
+
+    Threads, not processes: a process started afresh imports the script that started it again, and a user's script
+    without a ``__main__`` guard would run itself over; a forked one may deadlock on a lock that another thread (a
+    notebook kernel's) held.
     """
-    found = {name: raster.rendered() for name, raster in rasters.items() if raster.kind != "png"}
-    images = {name: raster for name, raster in rasters.items() if raster.kind == "png"}
+    found = {name: rendering.rendered() for name, rendering in renderings.items() if rendering.kind != "png"}
+    images = {name: rendering for name, rendering in renderings.items() if rendering.kind == "png"}
     workers = min(_cores(), len(images))
     if workers < 2:
-        found.update((name, raster.rendered()) for name, raster in images.items())
+        found.update((name, rendering.rendered()) for name, rendering in images.items())
     else:
         found.update(_in_threads(images, workers))
-    return {name: found[name] for name in rasters}
+    return {name: found[name] for name in renderings}
 
 
-def _in_threads(images: Mapping[str, Raster], workers: int) -> dict[str, bytes]:
+def _in_threads(images: Mapping[str, Rendering], workers: int) -> dict[str, bytes]:
     # Imported here: 7 ms, which a run of SVG alone does not pay.
     from concurrent.futures import ThreadPoolExecutor
 

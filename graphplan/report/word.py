@@ -178,13 +178,13 @@ def _figures(note: SyntaxTreeNode, pictures: Mapping[str, str]) -> dict[str, _Fi
     """The drawings the note's figures show, each at its size or smaller to fit the page, rendered all at once."""
     shown = sorted({source for node in note.walk() if (source := picture_source(node)) in pictures})
     widths: dict[str, float] = {}
-    rasters: dict[str, export.Raster] = {}
+    renderings: dict[str, export.Rendering] = {}
     for name in shown:
         width, height = export.svg_size_mm(pictures[name])
         scale = min(1.0, _LINE_MM / width, _PICTURE_HEIGHT_MM / height)
         widths[name] = width * scale
-        rasters[name] = export.Raster(pictures[name], "png", _PICTURE_DPI * scale)
-    return {name: _Figure(png, widths[name]) for name, png in export.rendered_all(rasters).items()}
+        renderings[name] = export.Rendering(pictures[name], "png", _PICTURE_DPI * scale)
+    return {name: _Figure(png, widths[name]) for name, png in export.rendered_all(renderings).items()}
 
 
 class _Writer:
