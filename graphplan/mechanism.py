@@ -300,10 +300,8 @@ def _joints_in_place(solver: Driver | Group, known: set[str]) -> str:
         except (GraphplanError, ValueError):
             continue
         if set(in_place.known_joints()) <= known:
-            placed = " and ".join(in_place.new_joints())
-            return (f"; its joints typed in each other's places? {solver.where}.joints = "
-                    f"{as_written(swapped)} joins it to {listed(in_place.known_joints())} and "
-                    f"places {placed}")
+            return (f"; its joints typed in each other's places? {solver.where}.joints = {as_written(swapped)} joins "
+                    f"it to {listed(in_place.known_joints())} and places {listed(in_place.new_joints())}")
     return ""
 
 
@@ -341,13 +339,11 @@ def _named_twice(scene: Scene, name: str, where: str, named_at: dict[str, str]) 
     placed = set(scene.frame_points) | {spec.name for spec in scene.points} | {
         joint for solver in (scene.driver, *scene.groups) for joint in solver.new_joints()}
     unplaced = [joint for joint in placing.known_joints() if joint not in placed]
-    joints = getattr(placing, "joints", None)
-    if len(unplaced) != 1 or joints is None:
+    in_place = _joints_in_place(placing, placed) if len(unplaced) == 1 else ""
+    if not in_place:
         return SceneError(where, f"{told}: name the point apart")
-    swapped = [unplaced[0] if joint == name else name if joint == unplaced[0] else joint for joint in joints]
-    return SceneError(where, f"{told}, and {unplaced[0]!r}, which {placing.where} joins to, is placed nowhere: its "
-                      f"joints typed in each other's places? {placing.where}.joints = {as_written(swapped)} joins it to {name} and places {unplaced[0]}; else "
-                      "name the point apart")
+    return SceneError(where, f"{told}, and {unplaced[0]!r}, which {placing.where} joins to, is placed nowhere"
+                             f"{in_place}; else name the point apart")
 
 
 # A point's or a frame line's name enters the note's vector equations, symbols and tables in a hundred places

@@ -969,7 +969,7 @@ def test_a_group_whose_joints_were_typed_in_each_others_places_is_told_them_in_t
     stage, error = first_error(to_toml(scene))
     assert stage == "build" and type(error) is SceneError
     assert str(error) == ("""points.E: 'E' is already the name of a joint groups[1] places (groups[1].joints[1]), """
-                          """and 'F', which groups[1] joins to, is placed nowhere: its joints typed in each other's """
+                          """and 'F', which groups[1] joins to, is placed nowhere; its joints typed in each other's """
                           """places? groups[1].joints = ["E", "F"] joins it to E and places F; else name the point """
                           """apart""")
     second["joints"] = ["E", "F"]
