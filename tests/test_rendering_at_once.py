@@ -72,6 +72,20 @@ def test_the_png_are_rendered_in_threads_and_the_pdf_in_the_callers(monkeypatch)
     assert set(where.values()) == {threading.current_thread().name}
 
 
+def test_no_more_than_four_threads_render_however_many_cores(monkeypatch):
+    threads = set()
+    render_png = export.svg_to_png
+
+    def png_noted(svg, dpi=export.DEFAULT_DPI):
+        threads.add(threading.current_thread().name)
+        return render_png(svg, dpi)
+
+    monkeypatch.setattr(export, "svg_to_png", png_noted)
+    monkeypatch.setattr(export, "_cores", lambda: 16)
+    rendered_all({f"{k}.png": Rendering(_page(60 + 5 * k, f"{k}"), "png") for k in range(12)})
+    assert 2 <= len(threads) <= 4
+
+
 def test_a_file_that_fails_stops_the_files_not_begun(monkeypatch):
     begun = []
     gate = threading.Event()

@@ -137,8 +137,13 @@ class Rendering:
         return svg_to_pdf(self.svg)
 
 
+# A third of a PNG's time holds Python's lock, which caps what threads can gain near 3×; and each thread holds its
+# sheet's pixels while it renders (70 MB an A1 sheet).
+_MOST_THREADS = 4
+
+
 def rendered_all(renderings: Mapping[str, Rendering]) -> dict[str, bytes]:
-    """Each file rendered, by its name: the PNG in threads, one a core; the PDF one by one.
+    """Each file rendered, by its name: the PNG in threads, one a core up to four; the PDF one by one.
 
     A sheet's PNG takes about a second, two thirds of it in cairo's compression, which lets other threads run
     meanwhile: an A1 run's 41 PNG took 11.7 s one by one, 7.3 s in two threads on two cores. An A3 run's 57 PDF took
@@ -151,7 +156,7 @@ def rendered_all(renderings: Mapping[str, Rendering]) -> dict[str, bytes]:
     """
     found = {name: rendering.rendered() for name, rendering in renderings.items() if rendering.kind != "png"}
     images = {name: rendering for name, rendering in renderings.items() if rendering.kind == "png"}
-    workers = min(_cores(), len(images))
+    workers = min(_cores(), len(images), _MOST_THREADS)
     if workers < 2:
         found.update((name, rendering.rendered()) for name, rendering in images.items())
     else:
