@@ -39,7 +39,7 @@ STAGES = (
     ("graphplan.render.sheet", "fewest_sheets_length_scale", "choosing μl (a scene without drawing.length_scale)"),
     ("graphplan.deliverables", "drawings", "a run's drawings laid out"),
     ("graphplan.render.sheet", "course_panels", "the course sheets' panels laid out (in a run or a test)"),
-    ("graphplan.deliverables", "encoded", "a run's drawings written as SVG and DXF (PNG and PDF rendered after)"),
+    ("graphplan.deliverables", "_encodings", "a run's drawings written as SVG and DXF (PNG and PDF rendered after)"),
     ("graphplan.deliverables", "tables", "a run's note and tables"),
     ("graphplan.deliverables", "figures", "a run's matplotlib plots"),
     ("graphplan.deliverables", "vibration_figures", "a run's vibration plots"),

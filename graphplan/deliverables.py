@@ -24,7 +24,6 @@ from .errors import SceneError
 from .locale import strings
 from .machine_dynamics import MachineDynamics
 from .reader import check_choice, check_choices
-from .render import export
 from .render.primitives import Layer, in_language
 
 # The scene, the analysis and what reads them are imported where they are used: the command line's parser takes
@@ -33,6 +32,7 @@ if TYPE_CHECKING:
     from .analysis import Analysis
     from .misreadings import SheetPolygons
     from .render.dynamics import Redrawings
+    from .render.export import Rendering
     from .render.sheet import SheetLever
     from .scene import Scene
 
@@ -636,16 +636,26 @@ def vibration_figures(scene: Scene) -> dict[str, str]:
     return found
 
 
-def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes | export.Rendering]:
-    """The files of one drawing in each of ``formats``, its PNG and PDF still to render: a run renders
-    all its drawings' and plots' at once (:func:`~graphplan.render.export.rendered_all`)."""
+def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes]:
+    """The files of one drawing in each of ``formats``."""
+    from .render.export import Rendering, rendered_all
+
+    files = _encodings(drawing, formats)
+    rendered = rendered_all({name: content for name, content in files.items() if isinstance(content, Rendering)})
+    return {name: rendered.get(name, content) for name, content in files.items()}
+
+
+def _encodings(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes | Rendering]:
+    """The files of one drawing in each of ``formats``, its PNG and PDF still to render: a run renders all its
+    drawings' and plots' at once (:func:`~graphplan.render.export.rendered_all`)."""
+    from .render.export import Rendering
     from .render.svg import to_svg
 
     svg = to_svg(drawing.layers, page=drawing.page) if drawing.page else to_svg(drawing.layers)
-    writers: dict[str, Callable[[], str | bytes | export.Rendering]] = {
+    writers: dict[str, Callable[[], str | bytes | Rendering]] = {
         "svg": lambda: svg,
-        "png": lambda: export.Rendering(svg, "png"),
-        "pdf": lambda: export.Rendering(svg, "pdf"),
+        "png": lambda: Rendering(svg, "png"),
+        "pdf": lambda: Rendering(svg, "pdf"),
         "dxf": lambda: _dxf(drawing),
     }
     return {f"{drawing.stem}.{kind}": writers[kind]() for kind in formats}
@@ -847,10 +857,12 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # By the force sheet's file, whether it is written or not: the note works its lever at that file's μV.
     sheet_levers = {_file_alone(lever.drawing): (lever.sheet, lever.scale) for drawing in made
                     for lever in drawing.levers}
-    renderings: dict[str, export.Rendering] = {}
+    from .render.export import Rendering, rendered_all
+
+    renderings: dict[str, Rendering] = {}
     for drawing in made:
-        for name, content in encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]).items():
-            if isinstance(content, export.Rendering):
+        for name, content in _encodings(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]).items():
+            if isinstance(content, Rendering):
                 renderings[name] = content
             else:
                 found[name] = content
@@ -866,11 +878,11 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # the export's 150, an A1 sheet at 300 dpi being 70 million pixels.
     for name, svg in plots.items():
         if name.endswith(".svg"):
-            renderings.update({f"{name[:-4]}.{kind}": export.Rendering(svg, kind, PLOT_DPI if kind == "png" else None)
+            renderings.update({f"{name[:-4]}.{kind}": Rendering(svg, kind, PLOT_DPI if kind == "png" else None)
                             for kind in formats if kind in ("png", "pdf")})
     if renderings:
         say("rendering the drawings and plots as " + " and ".join(kind for kind in formats if kind in ("png", "pdf")))
-        found.update(export.rendered_all(renderings))
+        found.update(rendered_all(renderings))
     # The note shows the drawings and plots written beside it, each in the section it illustrates.
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
     if {"note", "errors", "forces"} & set(pieces):
