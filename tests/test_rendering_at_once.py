@@ -115,7 +115,10 @@ def test_ctrl_c_while_the_threads_render_the_pngs_leaves_no_folder(tmp_path, cap
     def interrupted_at_the_third(svg, dpi=export.DEFAULT_DPI):
         rendered.append(svg)
         if len(rendered) == 3:
-            signal.raise_signal(signal.SIGINT)   # as a Ctrl-C from the terminal, while a thread renders
+            # As a Ctrl-C from the terminal while a thread renders: the process's signal, which the main thread,
+            # waiting on the renderers, takes (raise_signal would send it to this thread, and the main thread would
+            # see it only once the file it waits for was rendered).
+            signal.pthread_kill(threading.main_thread().ident, signal.SIGINT)
         return render_png(svg, dpi)
 
     monkeypatch.setattr(export, "svg_to_png", interrupted_at_the_third)
