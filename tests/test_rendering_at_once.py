@@ -9,6 +9,7 @@ from __future__ import annotations
 import shutil
 import signal
 import threading
+import time
 
 import pytest
 from console import without_progress
@@ -96,6 +97,7 @@ def test_a_file_that_fails_stops_the_files_not_begun(monkeypatch):
             gate.set()
             raise ValueError("cairo could not draw it")
         gate.wait(5)   # the others wait until the failure is raised: the pool then has many not begun
+        time.sleep(0.2)   # and take as long as a small drawing would, while the caller learns of the failure
         return b"png"
 
     monkeypatch.setattr(export, "svg_to_png", failing_first)
