@@ -172,7 +172,7 @@ def build(scene: Scene) -> Mechanism:
                 unplaced = [spec for spec in pending if spec.link in known_links]
                 if any(spec.name == name for spec in unplaced):
                     unplaced.sort(key=lambda spec: spec.name != name)
-                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on, frame, under_pins)
+                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on, frame, under_pins, scene)
                 raise _unknown_joint(solver, name, known_points, named_at)
         if index == 0 and scene.driver.kind == "slider" and not on_frame(scene, scene.driver.guide):
             raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
@@ -197,7 +197,7 @@ def build(scene: Scene) -> Mechanism:
             carried_by.setdefault(spec.name, spec.link)
         units.append(Unit(solver, placed))
     if pending:
-        raise _unplaceable(pending, known_links, fixed_on, sliding_on, frame, under_pins)
+        raise _unplaceable(pending, known_links, fixed_on, sliding_on, frame, under_pins, scene)
     _refuse_unused_frame_lines(scene, solvers)
     mechanism = Mechanism(
         scene=scene,
@@ -488,7 +488,7 @@ def _under_pin(name: str, key: str, link: int, under_pins, sliding_on) -> str:
 
 
 def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, frame: int,
-                 under_pins: Mapping[str, tuple[str, int]]) -> SceneError:
+                 under_pins: Mapping[str, tuple[str, int]], scene: Scene) -> SceneError:
     """Why the named points left over cannot be placed: a missing reference, or else a cycle."""
     pending_names = {spec.name for spec in pending}
     for spec in pending:
@@ -505,13 +505,42 @@ def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, fr
                 also = f" (toward may also name {', '.join(sliders)}, along the slide)" if sliders else ""
                 return SceneError(f"{spec.where}.{key}", f"{name!r} is not a point of link {spec.link}; its points "
                                   f"are {_known(sorted(on_link))}{also}{lookalike_hint(name, on_link)}"
-                                  f"{_carriers(name, spec.link, fixed_on, frame)}{under}")
+                                  f"{_carriers(name, spec.link, fixed_on, frame)}{under}"
+                                  f"{_links_in_place(spec, scene)}")
     spec = pending[0]
     key, name = ("from", spec.start) if spec.start in pending_names else ("toward", spec.toward)
     if name == spec.name:
         return SceneError(f"{spec.where}.{key}", f"{name!r} is the point itself; name two other points of link {spec.link}")
     return SceneError(f"{spec.where}.{key}", f"{name!r} refers back to {spec.name!r} through the named points "
                                              f"{', '.join(sorted(pending_names))} (a cyclic reference)")
+
+
+def _links_in_place(spec: PointSpec, scene: Scene) -> str:
+    """Where a group's links typed in each other's places (an RRR's [4, 3]) leave the named points placed from its
+    joints each on the wrong link, the links swapped back: the order that fixes every one of them on its own link.
+    A point whose ``from`` or link alone was mistyped is not told so: the swap would lose another point's, or leave
+    the other link with none to speak for it."""
+    for solver in scene.groups:
+        if spec.link not in solver.links:
+            continue
+        joints = set(solver.joints)
+        on_its_links = [point for point in scene.points
+                        if point.link in solver.links and {point.start, point.toward} <= joints]
+        if spec not in on_its_links:
+            return ""
+        for i, j in itertools.combinations(range(len(solver.links)), 2):
+            swapped = list(solver.links)
+            swapped[i], swapped[j] = swapped[j], swapped[i]
+            try:
+                fixed = dataclasses.replace(solver, links=tuple(swapped)).fixed_points()
+            except (GraphplanError, ValueError):
+                continue
+            # Both links carry a point the swap fixes: a point with one link number mistyped moves only its own.
+            both = {solver.links[i], solver.links[j]} <= {point.link for point in on_its_links}
+            if both and all({point.start, point.toward} <= set(fixed.get(point.link, ())) for point in on_its_links):
+                return (f"; the links typed in each other's places? {solver.where}.links = {as_written(swapped)} "
+                        f"fixes {spec.start} and {spec.toward} on link {spec.link}")
+    return ""
 
 
 def on_frame(scene: Scene, guide: Guide) -> bool:

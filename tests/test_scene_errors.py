@@ -986,6 +986,19 @@ def test_an_rrr_whose_joints_were_typed_in_each_others_places_is_told_them_in_th
                           "places B")
 
 
+def test_a_group_whose_links_were_typed_in_each_others_places_is_told_them_in_their_places() -> None:
+    """The four-bar's links typed [4, 3]: the coupler's centre S3, placed from A toward B on link 3, was refused as
+    "'A' is not a point of link 3" alone; the refusal now gives the links in their places, with which it builds."""
+    group = {**copy.deepcopy(RATCHET["groups"][0]), "links": [4, 3]}
+    stage, error = first_error(to_toml(variant(RATCHET, {"groups": [group]})))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == ("points.S3.from: 'A' is not a point of link 3; its points are B, C; A is a point of link 2 "
+                          "and of link 4; the links typed in each other's places? groups[0].links = [3, 4] fixes A "
+                          "and B on link 3")
+    group["links"] = [3, 4]
+    graphplan.build(scene_module.loads(to_toml(variant(RATCHET, {"groups": [group]}))))
+
+
 def test_second_group_reuses_a_link() -> None:
     second = {"kind": "RRR", "links": [4, 5], "joints": ["B", "D", "C"], "lengths": [0.3, 0.4], "assembly": "left"}
     stage, error = first_error(two_groups(second))
