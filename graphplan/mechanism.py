@@ -289,20 +289,28 @@ def _unknown_joint(solver: Driver | Group, name: str, known: set[str], named_at:
 def _joints_in_place(solver: Driver | Group, known: set[str]) -> str:
     """Where two of a group's joints typed in each other's places leave it joined to a point it places itself (an
     RRR's ["B", "A", "C"]), the two swapped back: the order that joins it to known points alone."""
-    joints = getattr(solver, "joints", None)
-    if joints is None:
+    if not hasattr(solver, "joints"):
         return ""
-    for i, j in itertools.combinations(range(len(joints)), 2):
-        swapped = list(joints)
-        swapped[i], swapped[j] = swapped[j], swapped[i]
+    for _, in_place in _swapped(solver, "joints"):
+        if set(in_place.known_joints()) <= known:
+            return (f"; its joints typed in each other's places? {solver.where}.joints = "
+                    f"{as_written(list(in_place.joints))} joins it to {listed(in_place.known_joints())} and places "
+                    f"{listed(in_place.new_joints())}")
+    return ""
+
+
+def _swapped(group: Group, key: str) -> Iterator[tuple[set, Group]]:
+    """The group with two of its ``key`` (``joints``, ``links``) in each other's places, each swap in turn, with the
+    two: the orders a refusal tries for the one that a slip of the fingers meant."""
+    values = getattr(group, key)
+    for i, j in itertools.combinations(range(len(values)), 2):
+        swapped = list(values)
+        swapped[i], swapped[j] = values[j], values[i]
         try:
-            in_place = dataclasses.replace(solver, joints=tuple(swapped))
+            in_place = dataclasses.replace(group, **{key: tuple(swapped)})
         except (GraphplanError, ValueError):
             continue
-        if set(in_place.known_joints()) <= known:
-            return (f"; its joints typed in each other's places? {solver.where}.joints = {as_written(swapped)} joins "
-                    f"it to {listed(in_place.known_joints())} and places {listed(in_place.new_joints())}")
-    return ""
+        yield {values[i], values[j]}, in_place
 
 
 def _check_point_names(scene: Scene) -> dict[str, str]:
@@ -528,18 +536,13 @@ def _links_in_place(spec: PointSpec, scene: Scene) -> str:
                         if point.link in solver.links and {point.start, point.toward} <= joints]
         if spec not in on_its_links:
             return ""
-        for i, j in itertools.combinations(range(len(solver.links)), 2):
-            swapped = list(solver.links)
-            swapped[i], swapped[j] = swapped[j], swapped[i]
-            try:
-                fixed = dataclasses.replace(solver, links=tuple(swapped)).fixed_points()
-            except (GraphplanError, ValueError):
-                continue
+        for two, in_place in _swapped(solver, "links"):
+            fixed = in_place.fixed_points()
             # Both links carry a point the swap fixes: a point with one link number mistyped moves only its own.
-            both = {solver.links[i], solver.links[j]} <= {point.link for point in on_its_links}
+            both = two <= {point.link for point in on_its_links}
             if both and all({point.start, point.toward} <= set(fixed.get(point.link, ())) for point in on_its_links):
-                return (f"; the links typed in each other's places? {solver.where}.links = {as_written(swapped)} "
-                        f"fixes {spec.start} and {spec.toward} on link {spec.link}")
+                return (f"; the links typed in each other's places? {solver.where}.links = "
+                        f"{as_written(list(in_place.links))} fixes {spec.start} and {spec.toward} on link {spec.link}")
     return ""
 
 
