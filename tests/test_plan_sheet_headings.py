@@ -215,3 +215,22 @@ def test_only_the_first_sheet_of_a_plan_sheet_has_its_plain_title_the_others_are
             written = " ".join(item.text for layer in sheet.layers if layer.name != "title-block"
                                for item in layer.items if isinstance(item, Text))
             assert "(продолжение)" in written, (position.number, sheet.number, written)
+
+
+def test_a_continued_heading_is_broken_at_its_phrase_where_that_fits(tmp_path):
+    """The Russian slotted lever's plans of position 11 on an A4 (poles of 80 and 60 mm) go on onto a sheet across
+    with the velocity plan alone.  Its heading "continued" is too wide for one line there and too wide broken to the
+    title's width, so it was broken to three fifths of it: four lines, where two, broken after the comma as the title
+    itself is broken, stood right of the corner box."""
+    text = starter("slotted-lever", "ru")
+    for key, value in (("velocity_pole", 80.0), ("acceleration_pole", 60.0)):
+        text, count = re.subn(rf"(?m)^{key}\s*=.*$", f"{key} = {value}", text)
+        assert count == 1, key
+    scene = tmp_path / "slotted_lever.toml"
+    scene.write_text(text, encoding="utf-8")
+    title = HEADINGS["ru"].format(number=11)
+    continued = [lines for lines in _sheet_headings(tmp_path, str(scene), "A4", "ru")[11]
+                 if _read(lines, "ru") == f"{title} (продолжение)"]
+    assert continued
+    assert all([line for line, _, _ in lines] == ["Планы скоростей и ускорений,", "положение 11 (продолжение)"]
+               for lines in continued)

@@ -228,7 +228,7 @@ def _headed(panel: Panel, continued: str) -> Panel:
     sheets after the first under the title "continued" (``continued``, a format of ``{title}``)."""
     heading = tuple(layer for layer in panel.layers if layer.name == plan_layout.TITLE_LAYER)
     ways = tuple(tuple(_continued(layer, continued, broken, share) for layer in heading)
-                 for broken, share in ((False, None), (True, None), *((True, share) for share in HEADING_SHARES[1:])))
+                 for broken, share in ((False, None), (True, None), *((True, share) for share in HEADING_SHARES)))
     narrower = (tuple(_continued(layer, "{title}", True, share) for layer in heading) for share in HEADING_SHARES)
     return replace(panel, heading=heading, continued_heading=tuple(dict.fromkeys(ways)),
                    broken_heading=tuple(way for way in dict.fromkeys(narrower) if way != heading),
