@@ -234,3 +234,26 @@ def test_a_continued_heading_is_broken_at_its_phrase_where_that_fits(tmp_path):
     assert continued
     assert all([line for line, _, _ in lines] == ["Планы скоростей и ускорений,", "положение 11 (продолжение)"]
                for lines in continued)
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_positions_sheets_read_in_the_order_of_its_drawings(locale):
+    """The slotted lever's plans of position 11 take two A3 sheets.  Packed tallest first, the acceleration plan
+    alone on an upright sheet came before the sheet of the mechanism and the velocity plan, and the heading went on
+    the acceleration plan's sheet.  The sheets now read in the order of the first drawing each holds."""
+    scene = dataclasses.replace(scenes()["slotted-lever"], locale=locale)
+    analysis = analyse(scene)
+    sheets = course_sheets(analysis, "A3")
+    reading = ("mechanism", "velocity", "acceleration")
+    split = 0
+    for position in analysis.plans:
+        firsts = []
+        for sheet in sheets:
+            held = [reading.index(kind.group(1)) for name in sheet.panels
+                    if (kind := re.fullmatch(rf"plan-{position.number}-({'|'.join(reading)})", name))]
+            if held:
+                firsts.append(min(held))
+        if len(firsts) > 1:
+            split += 1
+            assert firsts == sorted(firsts) and firsts[0] == 0, (position.number, firsts)
+    assert split, "no position's plans stand on more than one sheet"

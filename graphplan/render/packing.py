@@ -771,6 +771,7 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
                for piece in (part.parts if part.parts and not held(part) else (part,))]
     single = smallest_drawings(grouped)
     best: list[Page] | None = None
+    best_parts: list[Panel] = grouped
     # A sequence read in order keeps its groups (the grid's rows): its drawings one by one, each where it fits
     # best, read 2, 7, 15, 34, 1, 10, … over the sheet.
     for parts in (grouped,) if panel.in_order else (grouped, single):
@@ -788,8 +789,12 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
                 pages.append(_empty_page(sheet, form, _turn_holding(part, sheet, form, turns)))
                 pages[-1].place(part)
             if best is None or len(pages) < len(best):
-                best = pages
+                best, best_parts = pages, parts
     assert best is not None
+    # Packed tallest or largest first, the pages still read in the drawings' order: the slotted lever's acceleration
+    # plan of position 11, alone on an upright A3, came before the sheet of its mechanism and velocity plan.
+    reading = {part.name: k for k, part in enumerate(best_parts)}
+    best.sort(key=lambda page: min(reading[drawing.name] for drawing in page.drawings))
     if panel.heading:
         best = _headed(panel, best, sheet, form, turns) or best
     for page in best:
