@@ -755,7 +755,8 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
     order and, unless the panel's parts are a sequence read in order
     (``in_order``), tallest, largest and widest first; of two arrangements on as many pages the first tried is
     kept, so that a drawing stays with its neighbours and in reading order
-    where that costs no sheet.
+    where that costs no sheet; the pages are then put in the order of the
+    first drawing each holds.
     """
     def held(part: Panel) -> bool:
         return any(_empty_page(sheet, form, portrait).fits_empty(part) for portrait in turns)
