@@ -103,9 +103,9 @@ def _stretches(mechanism: Mechanism, positions: PositionSet, flagged: Callable[[
     firsts, lasts = np.flatnonzero(marked & ~before), np.flatnonzero(marked & ~after)
     if cyclic and lasts[0] < firsts[0]:   # the run over the start of the sweep ends first
         lasts = np.roll(lasts, -1)
-    starts = _narrowed(flagged, samples[firsts] - step, samples[firsts], open_end=~cyclic & (firsts == 0))
+    starts = _narrowed(flagged, samples[firsts] - step, samples[firsts], open_end=(not cyclic) & (firsts == 0))
     ends = _narrowed(flagged, samples[lasts] + step, samples[lasts],
-                     open_end=~cyclic & (lasts == len(samples) - 1))
+                     open_end=(not cyclic) & (lasts == len(samples) - 1))
     span = float(sweep[-1] - sweep[0])
     analysed = (positions.values - sweep[0]) / span
     spans, middles = [], []
