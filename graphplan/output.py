@@ -111,11 +111,13 @@ def check_folder(target: Path, option: str = "--out") -> Path:
         here = None
     try:
         resolved = target.resolve()
-    except (RuntimeError, OSError) as error:  # Python 3.11 tells a loop of links as a RuntimeError, 3.13 as an OSError
+    except (RuntimeError, OSError) as error:  # Python 3.11 tells a loop of links as a RuntimeError
         if isinstance(error, RuntimeError) or error.errno == errno.ELOOP:
-            raise OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give "
-                              f"{option} another folder") from None
+            raise _looping(target, option) from None
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+    # Python 3.13 resolves a path through a loop of links without a word, as far as the loop; the system tells it.
+    if _through_a_loop(target):
+        raise _looping(target, option)
     try:
         home = Path.home().resolve()
     except (RuntimeError, OSError):  # no home to be told of
@@ -132,6 +134,19 @@ def check_folder(target: Path, option: str = "--out") -> Path:
         raise
     except OSError as error:  # a name too long for the disk, a folder that may not be looked into
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+
+
+def _through_a_loop(path: Path) -> bool:
+    try:
+        path.stat()
+    except OSError as error:
+        return error.errno == errno.ELOOP
+    return False
+
+
+def _looping(target: Path, option: str) -> OutputError:
+    return OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give {option} "
+                       "another folder")
 
 
 def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
