@@ -238,7 +238,9 @@ ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw",
            "en-us": "en", "en_us": "en", "en-gb": "en", "en_gb": "en", "english": "en",
            # Keys by the textbook's symbols and by the American spelling; each meets only the key it names.
            "center": "centre", "j": "inertia", "m": "mass", "g": "gravity", "language": "locale", "lang": "locale",
-           "r": "length",
+           "r": "length", "l": "length",
+           # The moment of inertia about the centre of mass as the textbooks write it (J_S, I_S).
+           "js": "inertia", "j_s": "inertia", "is": "inertia", "i_s": "inertia", "i": "inertia",
            # An induction motor by the names a catalogue and a Russian textbook give it: its characteristic is Kloss'.
            "induction": "kloss", "asynchronous": "kloss", "async": "kloss", "асинхронный": "kloss", "клосс": "kloss"}
 

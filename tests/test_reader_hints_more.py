@@ -68,10 +68,16 @@ def test_a_misspelt_optional_table_is_named_with_the_one_meant(table, meant) -> 
     ("gravity = 9.81", "g = 9.81", "scene.g: unknown key; did you mean 'gravity'?"),
     ('locale  = "en"', 'language = "en"', "scene.language: unknown key; did you mean 'locale'?"),
     ("length  = 0.175", "r = 0.175", "driver.r: unknown key; did you mean 'length'?"),
+    # The crank's length as l: was told "driver.length: is required but missing", the l left unexplained.
+    ("length  = 0.175", "l = 0.175", "driver.l: unknown key; did you mean 'length'?"),
+    # The moment of inertia about the centre as the textbooks letter it: was "unknown key" and nothing more.
+    ("inertia = 0.51", "Js = 0.51", "links.3.Js: unknown key; did you mean 'inertia'?"),
+    ("inertia = 0.51", "I_S = 0.51", "links.3.I_S: unknown key; did you mean 'inertia'?"),
+    ("inertia = 0.51", "I = 0.51", "links.3.I: unknown key; did you mean 'inertia'?"),
     # 2.5 rev/s is 150 rev/min, exactly in binary.
     ("omega   = -17.0", "rps = 2.5",
      "driver.rps: unknown key; a speed in rev/s is given in rev/min as rpm: write rpm = 150.0"),
-], ids=["center", "J", "m", "g", "language", "r", "rps"])
+], ids=["center", "J", "m", "g", "language", "r", "l", "Js", "I_S", "I", "rps"])
 def test_a_key_under_its_symbol_or_american_spelling_is_named_with_the_key(old, new, message) -> None:
     stage, error = first_error(changed(CRANK_ROCKER, old, new))
     assert (stage, str(error)) == ("load", message)
