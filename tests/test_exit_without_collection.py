@@ -12,13 +12,17 @@ ROOT = Path(__file__).resolve().parents[1]
 
 # A checker registered before main() runs after main's own exit handler (atexit runs them last in, first out): it
 # prints how many objects the collector was left to pass over, and the file the command wrote, as the disk has it.
+# The count is taken from the one the interpreter starts with: Python 3.12 starts with 375 objects frozen.
 _PROBE = """
 import atexit, gc, sys
 from pathlib import Path
+
+at_start = gc.get_freeze_count()
 from graphplan.cli import main
 
 out = Path(sys.argv[1])
-atexit.register(lambda: print(gc.get_freeze_count(), len(out.read_text(encoding="utf-8")) if out.exists() else -1))
+atexit.register(lambda: print(gc.get_freeze_count() - at_start,
+                              len(out.read_text(encoding="utf-8")) if out.exists() else -1))
 if sys.argv[2] == "command line":
     sys.argv = ["graphplan", "new", "crank-rocker", "--out", str(out)]
     code = main()
