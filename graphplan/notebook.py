@@ -54,7 +54,7 @@ class Drawing:
     def save(self, path: str | Path) -> Path:
         """Write the drawing to ``path`` as its suffix says: ``.svg`` (its size in mm, as printed), ``.png``
         (at the command line's resolution) or ``.pdf``; returns the path."""
-        from .render.export import svg_to_pdf, svg_to_png
+        from .render.export import Rendering
 
         if not isinstance(path, str | os.PathLike):  # pathlib's error named neither save nor its path
             raise TypeError(f"save takes the path of the file to write, such as 'plan.svg' (got {path!r})")
@@ -67,8 +67,7 @@ class Drawing:
             path.write_text(self.svg, encoding="utf-8")
         elif suffix in (".png", ".pdf"):
             # Converted before the file is opened: a failed conversion leaves no empty file behind.
-            path.write_bytes(svg_to_pdf(self.svg) if suffix == ".pdf"
-                             else svg_to_png(self.svg) if self.png_dpi is None else svg_to_png(self.svg, self.png_dpi))
+            path.write_bytes(Rendering(self.svg, suffix[1:], self.png_dpi).rendered())
         else:
             raise ValueError(f"a drawing is saved as .svg, .png or .pdf, as its name's suffix says (got {path.name!r})")
         return path
