@@ -28,3 +28,17 @@ def test_no_position_number_stands_on_a_line(tmp_path, scene) -> None:
     assert len(numbers) >= 12, "the plan numbers its positions round the crank's circle"
     struck = [entry[4] for entry in numbers if len(ink.query(shapely.box(*box(*entry)), predicate="intersects"))]
     assert struck == []
+
+
+@pytest.mark.parametrize("scene", ["v_twin_engine", "engine_slider_crank", "ratchet_crank_rocker"])
+def test_no_letter_stands_on_a_points_path(tmp_path, scene) -> None:
+    """A letter with no clear spot by its point breaks the thin lines under it, the points' paths among them: the
+    V-twin's O, beside its pivot inside the 5 mm circle that S2 runs round it, stood struck through by that circle."""
+    source = positions_plan(tmp_path, scene)
+    root = ET.fromstring(source)
+    drawn = stroked_shapes(root, tuple(layer.get("id") for layer in root if layer.get("id") != "paths"))
+    assert drawn, "the plan draws the paths of its points"
+    paths = shapely.STRtree(drawn)
+    letters = [entry for entry in texts(source) if not re.fullmatch(r"\d+", entry[4])]
+    struck = [entry[4] for entry in letters if len(paths.query(shapely.box(*box(*entry)), predicate="intersects"))]
+    assert struck == []

@@ -176,15 +176,19 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels, breaking = place_breaking_thin_lines(anchors + swing_labels, every, drawn, bold_lines + frame,
+    # The points' paths are thin lines too, broken under a letter with no clear spot by its point as the positions'
+    # outlines are: kept whole, the V-twin's O stood struck through by the 5 mm circle that S2 runs round the pivot,
+    # and the triad's A was led off across the crank's circle to keep clear of its pin's path.
+    labels, breaking = place_breaking_thin_lines(anchors + swing_labels, every + paths, drawn, bold_lines + frame,
                                                  bold_ink + ink_of(frame), number_leaders, numbers,
                                                  _crowded_pins(plan, paper))
     # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number),
     # and so does a position's number round the crank's circle, set clear of the bold lines alone: the Scotch yoke's
-    # 10 and 4 stood struck through by the ends of its slot at those positions.
-    every = broken_under(every, breaking + swing_texts + numbers, breakable(every))
-    # A point's path too: the crank-rocker's 5 stood on the dashed path of B.
-    paths = broken_under(paths, numbers, breakable(paths))
+    # 10 and 4 stood struck through by the ends of its slot at those positions, and the crank-rocker's 5 on the dashed
+    # path of B.
+    under = breaking + swing_texts + numbers
+    every = broken_under(every, under, breakable(every))
+    paths = broken_under(paths, under, breakable(paths))
     # Under the bold links and the frame: the pins they draw stand over the ends of the springs and cylinders.
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)),
               *([Layer("load-links", tuple(loaded))] if loaded else []), Layer("extremes", tuple(bold)),
