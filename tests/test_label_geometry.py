@@ -6,7 +6,16 @@ import shapely
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.strtree import STRtree
 
-from graphplan.render.labels import _box_distances, _boxes_meet, _leaders, _pieces
+from graphplan.render.labels import (
+    LABEL_GAP_MM,
+    Anchor,
+    _box_distances,
+    _boxes_meet,
+    _leaders,
+    _pieces,
+    place_labels,
+    text_box,
+)
 
 RANDOM = np.random.default_rng(20261130)
 
@@ -72,3 +81,14 @@ def test_boxes_meet_where_shapely_says_they_intersect_edges_included():
     one, other = np.concatenate((one, touching)), np.concatenate((other, touching))
     expected = shapely.intersects(shapely.box(*one.T)[:, None], shapely.box(*other.T)[None, :])
     assert np.array_equal(_boxes_meet(one[:, None], other), expected)
+
+
+def test_a_label_none_of_whose_spots_meets_an_obstacle_stands_beside_its_point():
+    """Obstacles all far from the point: the placer's table of which spot meets which obstacle is then empty, and it
+    failed on it (an IndexError), as the plan of positions' O did, placed again with the thin lines and the points'
+    paths left to break under it, on the swing tried for a crank that cannot turn round."""
+    anchor = Anchor(at=(0.0, 0.0), text="O", size=2.5)
+    placement = place_labels([anchor], [LineString([(500.0, 500.0), (600.0, 500.0)])])
+    (text,) = placement.texts
+    assert placement.leaders == ()
+    assert text_box(text).distance(Point(0.0, 0.0)) <= LABEL_GAP_MM + 1e-9

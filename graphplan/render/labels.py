@@ -562,8 +562,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             # covered()'s, its table of which spot meets which obstacle as the pairs sorted without repeats: a table
             # for every spot of a drawing would take megabytes.  The weights are whole numbers: the sums are exact.
             hit, piece = tree.query(shapes, predicate="intersects")
-            pairs = np.sort(hit * len(fixed) + owners[piece])
-            pairs = pairs[np.concatenate(([True], pairs[1:] != pairs[:-1]))]
+            pairs = np.unique(hit * len(fixed) + owners[piece])  # none where no spot meets an obstacle
             covers = np.bincount(pairs // len(fixed), weights=weights[pairs % len(fixed)], minlength=len(shapes))
         covering = covers.reshape(boxes.shape[:2])
         cost = COVER * covering + RING * np.asarray(ring, dtype=float) + order * 0.01
