@@ -562,7 +562,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             # covered()'s, its table of which spot meets which obstacle as the pairs sorted without repeats: a table
             # for every spot of a drawing would take megabytes.  The weights are whole numbers: the sums are exact.
             hit, piece = tree.query(shapes, predicate="intersects")
-            pairs = np.unique(hit * len(fixed) + owners[piece])  # none where no spot meets an obstacle
+            pairs = np.sort(hit * len(fixed) + owners[piece])
+            unrepeated = np.ones(len(pairs), dtype=bool)  # none where no spot meets an obstacle
+            unrepeated[1:] = pairs[1:] != pairs[:-1]
+            pairs = pairs[unrepeated]  # not np.unique, which imports numpy.ma (a cold run's import time)
             covers = np.bincount(pairs // len(fixed), weights=weights[pairs % len(fixed)], minlength=len(shapes))
         covering = covers.reshape(boxes.shape[:2])
         cost = COVER * covering + RING * np.asarray(ring, dtype=float) + order * 0.01
