@@ -1335,7 +1335,8 @@ def place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dra
                               links: Sequence[BaseGeometry] = ()) -> tuple[Placement, list[Text]]:
     """The labels placed clear of the drawn lines, and those of them that the thin lines ``every`` break under
     (:func:`broken_under`): the plan of positions' letters and numbers (``every``: the other positions' thin
-    outlines and the points' paths) and the plan sheet's mechanism's (the frame's hatching and guides, the run-on lines to Assur's points).
+    outlines and the points' paths) and the plan sheet's mechanism's (the frame's hatching and guides, the run-on
+    lines to Assur's points).
 
     The ``inked`` lines among ``drawn`` (the extremes or the links, the springs and cylinders, the travel's dimension,
     and the frame's symbols, whose thin hatching is never broken under a label either) are kept clear of as wide as
