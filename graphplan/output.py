@@ -109,15 +109,15 @@ def check_folder(target: Path, option: str = "--out") -> Path:
             raise OutputError(f"{target}: is a path from the folder the command runs in, which is gone (deleted or "
                               f"moved); give {option} a full path, or run the command in another folder") from None
         here = None
+    # Asked of the system, not of Path.resolve: Python 3.11 tells a loop as a RuntimeError, 3.13 resolves a path
+    # through one without a word, as far as the loop.
+    if _through_a_loop(target):
+        raise OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give "
+                          f"{option} another folder")
     try:
         resolved = target.resolve()
-    except (RuntimeError, OSError) as error:  # Python 3.11 tells a loop of links as a RuntimeError
-        if isinstance(error, RuntimeError) or error.errno == errno.ELOOP:
-            raise _looping(target, option) from None
+    except OSError as error:
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
-    # Python 3.13 resolves a path through a loop of links without a word, as far as the loop; the system tells it.
-    if _through_a_loop(target):
-        raise _looping(target, option)
     try:
         home = Path.home().resolve()
     except (RuntimeError, OSError):  # no home to be told of
@@ -142,11 +142,6 @@ def _through_a_loop(path: Path) -> bool:
     except OSError as error:
         return error.errno == errno.ELOOP
     return False
-
-
-def _looping(target: Path, option: str) -> OutputError:
-    return OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give {option} "
-                       "another folder")
 
 
 def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
