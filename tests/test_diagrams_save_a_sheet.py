@@ -13,6 +13,7 @@ import re
 
 from graphplan.analysis import analyse
 from graphplan.kinematic_diagrams import AXIS_MM, FIELD_MM
+from graphplan.locale import strings
 from graphplan.render.packing import pack
 from graphplan.render.primitives import Text
 from graphplan.render.sheet import _apart, diagram_parts, diagrams_panel
@@ -29,7 +30,8 @@ def crank_rocker_in_russian():
 def sheets_taken(analysis, field: float, sheet: str = "A3") -> int:
     """The sheets the diagrams drawn at ``field`` take on their own, as the packing lays them out."""
     title, drawn = diagram_parts(analysis, AXIS_MM, field, lettered=False)
-    return len(pack([_apart("diagrams", title, drawn)], sheet, form_of(analysis.scene.locale)))
+    continued = strings(analysis.scene.locale)["force_sheet_continued"]
+    return len(pack([_apart("diagrams", title, drawn, continued)], sheet, form_of(analysis.scene.locale)))
 
 
 def test_the_diagrams_take_one_sheet_fewer_at_the_highest_field_that_saves_it():
@@ -59,4 +61,6 @@ def test_diagrams_that_fit_their_sheets_keep_the_usual_field():
     assert sheets_taken(analysis, FIELD_MM) == 2
     panel = diagrams_panel(analysis, "A3")
     _, usual = diagram_parts(analysis, AXIS_MM, FIELD_MM)
-    assert [part.layers for part in panel.parts] == [tuple(part) for part in usual]
+    # Each diagram as drawn, those after the first under their title "continued" where they stand apart.
+    assert [part.without_heading().layers if part.continues else part.layers
+            for part in panel.parts] == [tuple(part) for part in usual]

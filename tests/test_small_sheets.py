@@ -21,6 +21,7 @@ from test_sheets import (
     STANDARD,
     analyses_of,
     force_drawings_on,
+    held_under_its_heading,
     inside,
     layer,
     overlap,
@@ -414,8 +415,7 @@ def test_the_kinematic_diagrams_of_every_fixture_fit_a4_with_their_long_lines_br
     panel = diagrams_panel(analysis, "A4")
     form = form_of(analysis.scene.locale)
     for part in panel.parts:
-        x0, y0, x1, y1 = part.extent
-        assert any(page_geometry("A4", form, portrait).holds(x1 - x0, y1 - y0) for portrait in (False, True))
+        assert held_under_its_heading(part, "A4", form), part.name
     # Every word is still there: the broken lines read as the whole ones.
     written = " ".join(text.text for text in texts(panel.layers))
     record = of_analysis(analysis)

@@ -146,13 +146,19 @@ def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None,
     extents[-1] = _together(extents[-1], _extent([footer]))
     left = min(extent[0] for extent in extents)
     title = words["kd_title"].format(link=record.link, point=record.point or "")
-    # Broken to the diagrams' width, each line over the next: at 7 mm the Russian title ran 277 mm, wider than the
-    # diagrams on a small sheet.
-    lines = fitted(title, max(extent[2] for extent in extents) - left, TITLE_SIZE, "bold")
-    heading = tuple(Text((left, extents[0][3] + 6.0 + (len(lines) - 1 - k) * LINE_SPACING * TITLE_SIZE), line,
-                         TITLE_SIZE, "start", weight="bold") for k, line in enumerate(lines))
+    # Broken to the diagrams' width: at 7 mm the Russian title ran 277 mm, wider than the diagrams on a small sheet.
+    heading = title_texts(title, (left, extents[0][3]), max(extent[2] for extent in extents) - left)
     drawn[0] = [*drawn[0], Layer("sheet-title", heading)]
     return drawn
+
+
+def title_texts(title: str, corner: tuple[float, float], room: float) -> tuple[Text, ...]:
+    """``title`` in bold over a drawing whose top left corner is ``corner``, broken to ``room`` mm wide, each line
+    over the next: the kinematic diagrams' title, and the "continued" one over a diagram on a sheet of its own."""
+    lines = fitted(title, room, TITLE_SIZE, "bold")
+    left, top = corner
+    return tuple(Text((left, top + 6.0 + (len(lines) - 1 - k) * LINE_SPACING * TITLE_SIZE), line,
+                      TITLE_SIZE, "start", weight="bold") for k, line in enumerate(lines))
 
 
 def _extent(layers: list[Layer]) -> tuple[float, float, float, float]:

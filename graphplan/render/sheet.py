@@ -897,6 +897,7 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
         return diagram_parts(analysis, axis, field, lettered=(axis, field) == (AXIS_MM, FIELD_MM))
 
     form = form_of(analysis.scene.locale)
+    continued = strings(analysis.scene.locale)["force_sheet_continued"]
     intervals = interval_count(analysis.mechanism.driver.cyclic, analysis.scene.positions.count)
     axis, field = AXIS_MM, FIELD_MM
     title, drawn = drawn_at(axis, field)
@@ -919,12 +920,12 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
             title, drawn = longer
     # The size chosen lettered: its parts stand apart where no sheet holds a larger way.
     title, drawn = diagram_parts(analysis, axis, field)
-    usual = _apart("diagrams", title, drawn)
+    usual = _apart("diagrams", title, drawn, continued)
     if sheet != "none" and not holds(sheet, form, *_size(usual.layers)):
-        lower = _field_saving_a_sheet(drawn_at, sheet, form, axis, field)
+        lower = _field_saving_a_sheet(drawn_at, sheet, form, axis, field, continued)
         if lower != field:
             field = lower
-            usual = _apart("diagrams", *diagram_parts(analysis, axis, field))
+            usual = _apart("diagrams", *diagram_parts(analysis, axis, field), continued)
     if sheet == "none" or (axis, field) != (AXIS_MM, FIELD_MM) or not holds(sheet, form, *_size(usual.layers)):
         return usual
     # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
@@ -953,17 +954,18 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
 
 
 def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[list[Layer]]]], sheet: str, form: str,
-                         axis: float, field: float) -> float:
+                         axis: float, field: float, continued: str) -> float:
     """``field`` (mm), or the largest field down to :data:`_FIELD_GIVEN_FOR_A_SHEET` of it at which the kinematic
     diagrams stand on fewer sheets of their own: on A3 the Russian crank-rocker's three stood one to a sheet, each a
-    third full, where fields 3 mm lower put two on one sheet.  ``drawn_at(axis, field)`` draws them unlettered."""
+    third full, where fields 3 mm lower put two on one sheet.  ``drawn_at(axis, field)`` draws them unlettered,
+    ``continued`` is the title "continued" over a diagram that stands apart (:func:`_apart`)."""
     def sheets_taken(at: float) -> float:
         title, drawn = drawn_at(axis, at)
         # A lower field draws the chords' pole farther left (the pole distance follows the field): a part may
         # come out wider than the sheet.
         if not all(holds(sheet, form, *_size(part)) for part in drawn):
             return math.inf
-        return len(pack([_apart("diagrams", title, drawn)], sheet, form))
+        return len(pack([_apart("diagrams", title, drawn, continued)], sheet, form))
 
     taken = sheets_taken(field)
     if taken == 1:
@@ -973,14 +975,35 @@ def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[lis
                 field)
 
 
-def _apart(name: str, label: str, drawn: Sequence[Sequence[Layer]], drawn_alone: bool = False) -> Panel:
-    """Diagrams ``drawn`` one under another as the panel ``name`` (``label`` says what it is), each a part that may
-    stand apart where there are several: the kinematic diagrams, the load diagrams."""
-    from .diagrams import stacked
+def _apart(name: str, label: str, drawn: Sequence[Sequence[Layer]], continued: str,
+           drawn_alone: bool = False) -> Panel:
+    """Diagrams ``drawn`` one under another as the panel ``name`` (``label``, their title, says what it is), each
+    a part that may stand apart where there are several: the kinematic diagrams, the load diagrams.
 
-    parts = tuple(Panel(f"{name}-{k + 1}", tuple(part), to_scale=False)
-                  for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
-    return Panel(name, tuple(stacked(drawn)), parts, label, to_scale=False, drawn_alone=drawn_alone)
+    The title stands over the first only.  Each part after it goes on from
+    the one before (:attr:`Panel.continues`) under the title "continued"
+    (``continued``, a format of ``{title}``), which it loses on the sheet of
+    that one: on an A3 the shaper's acceleration diagram stood on a sheet of
+    its own under its caption alone, and read as a drawing of its own.  The
+    title is on one line where the sheet has the room, else broken to the
+    part's width; last of its ways the part stands bare, which a sheet holds
+    alone.
+    """
+    from .diagrams import stacked, title_texts
+
+    parts: list[Panel] = []
+    for k, part in enumerate(drawn if len(drawn) > 1 else ()):
+        bare = Panel(f"{name}-{k + 1}", tuple(part), to_scale=False)
+        if not k:
+            parts.append(bare)
+            continue
+        x0, _, x1, top = bare.extent
+        headings = dict.fromkeys(title_texts(continued.format(title=label), (x0, top), room)
+                                 for room in (math.inf, x1 - x0))
+        first, *others = (replace(bare, layers=(*bare.layers, Layer(force_rows.HEADING_LAYER, heading)))
+                          for heading in headings)
+        parts.append(replace(first, alternatives=(*others, bare), continues=parts[-1].name))
+    return Panel(name, tuple(stacked(drawn)), tuple(parts), label, to_scale=False, drawn_alone=drawn_alone)
 
 
 def _lettered_diagrams(analysis: Analysis, axis: float, field: float,
@@ -1223,7 +1246,8 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
             drawn, usual = load_layout.parts(diagrams, text, smaller), False
     # At the usual fields, the drawing load_diagrams.svg is (:func:`graphplan.render.load_diagrams.layout`).  Read
     # after the force sheets, whose values they give, where that costs no sheet.
-    return replace(_apart("load-diagrams", text["ld_title"], drawn, drawn_alone=usual), reads_after="forces")
+    return replace(_apart("load-diagrams", text["ld_title"], drawn, text["force_sheet_continued"], drawn_alone=usual),
+                   reads_after="forces")
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
