@@ -230,6 +230,9 @@ class Page:
     corner: Rect | None = None
     # Whether a drawing goes under the corner box rather than beside it where both are as compact.
     tuck: bool = True
+    # Whether the page holds parts of a drawing that stands under a heading, with none of it over them: only the
+    # title block says whose they are (:func:`_bare`).
+    bare: bool = False
 
     def obstacles(self) -> list[Rect]:
         """The title block and the corner box, each grown by the room a drawing keeps from it."""
@@ -444,8 +447,9 @@ def pack(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
     """The panels on as few sheets as this simple packing needs.
 
     An A4 stands upright or across, all sheets one way when that needs no
-    more of them, else each sheet the way its drawings fit (a tall plan of
-    positions upright, wide diagrams across), as a set of A4 drawings may.
+    more of them and leaves no more parts of a drawing bare (:attr:`Page.bare`),
+    else each sheet the way its drawings fit (a tall plan of positions
+    upright, wide diagrams across), as a set of A4 drawings may.
     A bigger sheet stands across, as a course project's do, and a sheet of
     it upright only where it opens with a drawing too tall for it across.
     """
@@ -481,15 +485,18 @@ def _packed(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
         return _pack_on(panels, sheet, form, turns)
     # ESKD puts an A4 upright; the other standards turn it as the drawing needs.
     upright_first = form == "eskd"
-    mixed = _pack_on(panels, sheet, form, tuple(sorted(turns, key=lambda portrait: portrait != upright_first)))
-    packed = [mixed]
-    for portrait in turns:
+    packed = [_pack_on(panels, sheet, form, (upright_first, not upright_first))]
+    # Each sheet turned as the drawing that opens it needs, the other way first too: an English slider-crank's
+    # force sheets took a sheet fewer upright where they could, and all upright left two of them bare.
+    for ways in ((not upright_first, upright_first), *((portrait,) for portrait in turns)):
         try:
-            packed.append(_pack_on(panels, sheet, form, (portrait,)))
+            packed.append(_pack_on(panels, sheet, form, ways))
         except SceneError:
             continue
-    return min(packed, key=lambda pages: (len(pages), len({_upright(page) for page in pages}),
-                                          _upright(pages[0]) != upright_first))
+    # One way only where that leaves no more drawings bare: all upright, a Chinese slider-crank's force sheet of
+    # position 2 stood its driving link and polygon apart with no heading, where across it stood whole under it.
+    return min(packed, key=lambda pages: (len(pages), sum(page.bare for page in pages),
+                                          len({_upright(page) for page in pages}), _upright(pages[0]) != upright_first))
 
 
 def _upright(page: Page) -> bool:
@@ -529,11 +536,20 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
             raise _too_big(panel, sheet, form, turns)
         else:
             # Parts go on sheets of their own, whose title block says whose parts they are.
-            pages += _parts_on(panel, sheet, form, turns)
+            pages += _bare(panel, _parts_on(panel, sheet, form, turns))
         last_of_kind[kind] = len(pages) - 1
     for page in pages:
         _centre(page)
         _headings_named(page)
+    return pages
+
+
+def _bare(panel: Panel, pages: list[Page]) -> list[Page]:
+    """``pages`` of ``panel``'s parts, each marked :attr:`Page.bare` where ``panel`` stands under a heading and no
+    drawing on the page has one (of the panel's heading, a part's own, or its "continued")."""
+    if has_heading(panel.layers):
+        for page in pages:
+            page.bare = not any(has_heading(drawing.layers) for drawing, _, _ in page.placed)
     return pages
 
 
