@@ -1,7 +1,7 @@
 """How many sheets the force sheets take as the run chooses their cuts, against more cuts tried and a search of
 every combination of cuts.
 
-    python bench/sheet_cuts.py [--sheet SHEET ...] [--budget SECONDS]
+    python bench/sheet_cuts.py [--sheet SHEET ...] [--budget SECONDS] [--jobs N]
 
 A force sheet that no sheet holds whole stands in parts; `force_rows.Rows.cuts` offers the first
 `force_rows.MOST_CUTS` cuts into as many parts (least paper first), and the run (`render/sheet.py` `course_panels`)
@@ -22,7 +22,8 @@ diagrams then put after the force sheets where that costs no sheet, `force_sheet
 others' before any force sheet is drawn larger.
 
 Times are processor times (the machine is shared): each run's own, and each choice's as a fraction of the run
-as it is.  Results go to bench/results/sheet_cuts.json and sheet_cuts.md.
+as it is; so ``--jobs`` runs that many interpreters at a time (the 189 runs took 16 processor minutes, 8 minutes
+two at a time on two processors).  Results go to bench/results/sheet_cuts.json and sheet_cuts.md.
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -244,6 +246,7 @@ def main() -> None:
     parser.add_argument("--sheet", action="append", default=[], help="also measure on this sheet (A4, A3, ...)")
     parser.add_argument("--budget", type=float, default=BUDGET_S,
                         help="processor seconds the exhaustive search may take per scene")
+    parser.add_argument("--jobs", type=int, default=1, help="runs at a time, each in an interpreter of its own")
     parser.add_argument("--one", nargs=2, metavar=("SCENE", "LOCALE"), help=argparse.SUPPRESS)
     arguments = parser.parse_args()
     if arguments.one:
@@ -252,12 +255,12 @@ def main() -> None:
         return
     names = [str(path.relative_to(ROOT)) for path in sorted((ROOT / "fixtures").glob("*.toml"))]
     names += [f"new:{kind}" for kind in STARTERS]
+    runs = [(name, locale, sheet) for sheet in (None, *arguments.sheet) for name in names for locale in LOCALES]
     rows = []
-    for sheet in (None, *arguments.sheet):
-        for name in names:
-            for locale in LOCALES:
-                rows.append(measured(name, locale, sheet, arguments.budget))
-                print(json.dumps(rows[-1]), flush=True)
+    with ThreadPoolExecutor(arguments.jobs) as pool:
+        for row in pool.map(lambda run: measured(*run, arguments.budget), runs):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
     summarised(rows, arguments.budget)
 
 
