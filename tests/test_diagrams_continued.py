@@ -2,8 +2,8 @@
 
 On an A3 the shaper's acceleration diagram stood alone on the sheet after
 its displacement and velocity diagrams, under its caption alone, and read as
-a drawing of its own; the ratchet's three Russian diagrams stood one to a
-sheet, two of them so.  Each sheet of kinematic diagrams now carries one
+a drawing of its own; so did the ratchet's in Russian and in Chinese.  Each
+sheet of kinematic diagrams now carries one
 heading, the title on the sheet they begin on and the title "continued" on
 each sheet after, as the force sheets' parts and the velocity plans' rows do.
 The load diagrams too: the V-twin's two stand one to an upright A4.

@@ -54,8 +54,8 @@ def test_a_part_that_stands_whole_on_an_a4_across_is_not_cut_up_bare_to_stand_up
     """The slider-crank starter on A4: every sheet upright stood its force sheets' driving links apart from their
     polygons, on a sheet of their own with no heading (the title block alone said whose they were), though each
     stands whole under its heading "continued" on an A4 across: in Chinese on as many sheets; in English the sheets
-    upright where the drawing that opens them stands so, across where it does not, take one fewer than all across
-    did, the first way tried for an ISO A4."""
+    upright where the drawing that opens them stands so, across where it does not, take one fewer than the other way
+    round, across first, the only order tried for an ISO A4."""
     analysis = analyse(graphplan.load_text(starter("slider-crank", locale)))
     seen = force_sheets_headed(course_sheets(analysis, "A4"), locale)
     assert seen == {"forces-2", "forces-8"}

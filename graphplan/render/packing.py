@@ -487,7 +487,7 @@ def _packed(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
     upright_first = form == "eskd"
     packed = [_pack_on(panels, sheet, form, (upright_first, not upright_first))]
     # Each sheet turned as the drawing that opens it needs, the other way first too: an English slider-crank's
-    # force sheets took a sheet fewer upright where they could, and all upright left two of them bare.
+    # force sheets took a sheet fewer turned upright first than across first, and all upright left two bare.
     for ways in ((not upright_first, upright_first), *((portrait,) for portrait in turns)):
         try:
             packed.append(_pack_on(panels, sheet, form, ways))
