@@ -29,6 +29,7 @@ from ..kinematic_diagrams import KinematicDiagrams
 from ..locale import strings
 from ..scales import format_scale
 from . import lettering
+from . import plans as plan_layout
 from .labels import obstacles_of, text_box
 from .numerals import scale_factor
 from .primitives import (
@@ -155,10 +156,8 @@ def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None,
 def title_texts(title: str, corner: tuple[float, float], room: float) -> tuple[Text, ...]:
     """``title`` in bold over a drawing whose top left corner is ``corner``, broken to ``room`` mm wide, each line
     over the next: the kinematic diagrams' title, and the "continued" one over a diagram on a sheet of its own."""
-    lines = fitted(title, room, TITLE_SIZE, "bold")
     left, top = corner
-    return tuple(Text((left, top + 6.0 + (len(lines) - 1 - k) * LINE_SPACING * TITLE_SIZE), line,
-                      TITLE_SIZE, "start", weight="bold") for k, line in enumerate(lines))
+    return plan_layout.title_texts(fitted(title, room, TITLE_SIZE, "bold"), TITLE_SIZE, (left, top + 6.0), LINE_SPACING)
 
 
 def _extent(layers: list[Layer]) -> tuple[float, float, float, float]:

@@ -733,12 +733,13 @@ def _off_line(point: complex, through: complex, unit: complex) -> float:
     return ((point - through) * unit.conjugate()).imag
 
 
-def title_texts(lines: Sequence[str], size: float, at: tuple[float, float]) -> tuple[Text, ...]:
-    """A drawing's title in bold at cap height ``size``, its ``lines`` (one, or the title broken) a caption's line
-    apart, from the left of ``at`` up, the last line's baseline at ``at``: the heading of a plan sheet, of the
-    velocity plans, of a force sheet, and each "continued"."""
+def title_texts(lines: Sequence[str], size: float, at: tuple[float, float],
+                spacing: float = CAPTION_LINE) -> tuple[Text, ...]:
+    """A drawing's title in bold at cap height ``size``, its ``lines`` (one, or the title broken) ``spacing`` sizes
+    apart (a caption's line), from the left of ``at`` up, the last line's baseline at ``at``: the heading of a plan
+    sheet, of the velocity plans, of a force sheet, of the kinematic diagrams, and each "continued"."""
     left, last = at
-    return tuple(Text((left, last + CAPTION_LINE * size * (len(lines) - 1 - k)), line, size, "start", weight="bold")
+    return tuple(Text((left, last + spacing * size * (len(lines) - 1 - k)), line, size, "start", weight="bold")
                  for k, line in enumerate(lines))
 
 
