@@ -28,9 +28,8 @@ def _document() -> dict:
     return tomllib.loads(SCENE.read_text(encoding="utf-8"))
 
 
-def _cylinders() -> dict[str, tuple[float, float]]:
+def _cylinders(document: dict) -> dict[str, tuple[float, float]]:
     """Each piston's pin, with its cylinder's angle (rad) and its rod's length."""
-    document = _document()
     lines = document["frame"]["lines"]
     return {group["joints"][1]: (math.radians(lines[group["guide"]]["angle"]), group["length"])
             for group in document["groups"]}
@@ -42,7 +41,7 @@ def test_each_piston_moves_as_a_centric_slider_crank_along_its_own_cylinder():
     omega = document["driver"]["rpm"] * 2 * math.pi / 60
     phi = 2 * np.pi * np.arange(72) / 72
     motion = graphplan.solve(graphplan.load(SCENE), driver=phi)
-    for pin, (alpha, rod) in _cylinders().items():
+    for pin, (alpha, rod) in _cylinders(document).items():
         axis = np.array([math.cos(alpha), math.sin(alpha)])
         psi = phi - alpha
         root = np.sqrt(rod**2 - (r * np.sin(psi)) ** 2)
@@ -54,7 +53,8 @@ def test_each_piston_moves_as_a_centric_slider_crank_along_its_own_cylinder():
 
 
 def test_the_rear_cylinder_reaches_its_top_dead_centre_the_vs_angle_after_the_front():
-    (front, _), (rear, _) = _cylinders().values()
+    document = _document()
+    (front, _), (rear, _) = _cylinders(document).values()
     scene = graphplan.load(SCENE)
     positions = scene.analyse().positions
     assert positions.extremes[0] % (2 * math.pi) == pytest.approx(front, abs=1e-9), "the run starts at its TDC"
@@ -64,6 +64,6 @@ def test_the_rear_cylinder_reaches_its_top_dead_centre_the_vs_angle_after_the_fr
     assert (working, idle) == pytest.approx((math.pi, math.pi), abs=1e-9), "a centric slider-crank: K = 1"
     motion = graphplan.solve(scene, driver=[front, rear])
     tops = [np.hypot(*motion.point(pin).r[k]) for k, pin in enumerate(("B", "C"))]
-    rod = _document()["groups"][0]["length"]
-    assert tops == pytest.approx([_document()["driver"]["length"] + rod] * 2, abs=1e-12)
+    rod = document["groups"][0]["length"]
+    assert tops == pytest.approx([document["driver"]["length"] + rod] * 2, abs=1e-12)
     assert (rear - front) == pytest.approx(math.pi / 2), "a 90° V"
