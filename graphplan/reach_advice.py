@@ -377,7 +377,7 @@ def _rocking_changes(scene: Scene) -> tuple[Scene, tuple[str, ...]]:
     start, a load's window or diagram of the working stroke, the flywheel and the equation of motion all need a
     turn (the swing alone was advised, and the scene that followed it was refused at the next of them)."""
     changes = []
-    if scene.positions.start != 0.0:
+    if scene.positions.start_given or scene.positions.start != 0.0:  # start = 0 written is refused beside a swing
         changes.append("leave positions.start out")
     loads = []
     for load in scene.loads:
@@ -398,7 +398,8 @@ def _rocking_changes(scene: Scene) -> tuple[Scene, tuple[str, ...]]:
         if turning:
             changes.append(f"leave {', '.join(turning)} out of [dynamics]")
         dynamics = replace(dynamics, delta=None, omega=None, flywheel_shaft_rpm=None, motion=None)
-    rocking = replace(scene, positions=replace(scene.positions, start=0.0), loads=tuple(loads), dynamics=dynamics)
+    rocking = replace(scene, positions=replace(scene.positions, start=0.0, start_given=False), loads=tuple(loads),
+                      dynamics=dynamics)
     return rocking, tuple(changes)
 
 

@@ -177,6 +177,8 @@ class Positions:
     # The positions whose velocity plans are drawn too, all at one μV (the course project's plans of every
     # position, from which the equivalent model is read): ``velocity_plans = "all"`` or a list of numbers.
     velocity_plans: tuple[int, ...] = ()
+    # Whether the scene writes start, 0 included: a rocking crank's or a slider's positions refuse it written.
+    start_given: bool = False
 
 
 @dataclass(frozen=True)
@@ -1236,7 +1238,7 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
                          f"{MOST_VELOCITY_PLANS} make a readable drawing; list the positions to draw")
     table.done(elsewhere=keys_of_other_tables("positions"))
     return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans),
-                     velocity_plans=tuple(velocity_plans))
+                     velocity_plans=tuple(velocity_plans), start_given=table.has("start"))
 
 
 def _start_word(text: str, where: str) -> str:

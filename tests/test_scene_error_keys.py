@@ -243,6 +243,18 @@ def test_a_crank_advised_to_rock_runs_once_the_advice_is_followed(tmp_path, load
     _runs(followed, tmp_path, "followed")
 
 
+def test_a_crank_advised_to_rock_is_told_to_leave_out_a_start_written_as_zero(tmp_path) -> None:
+    """A start of 0 written out is refused beside a swing as any other start is, but the advice took it for a start
+    left out and did not say to drop it: the scene that followed the advice was refused at positions.start."""
+    scene = _DOUBLE_ROCKER.replace("{load}", 'value = 20.0\nduring = "working"').replace("start = 30.0", "start = 0.0")
+    told = _refused(scene, tmp_path)
+    swing = re.search(r"e\.g\. driver\.swing = (\[-?\d+, -?\d+\])", told)
+    assert swing is not None, told
+    assert "leave positions.start out" in told
+    followed = scene.replace('joint = "A"\n', f'joint = "A"\nswing = {swing.group(1)}\n', 1)
+    _runs(followed.replace("start = 0.0\n", ""), tmp_path, "followed")
+
+
 @pytest.mark.parametrize(("key", "given"), [
     ("force_scale", "0.001"),
     ("length_scale", "0.00001"),
