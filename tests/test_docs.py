@@ -44,13 +44,20 @@ def key_paths(node, path=""):
             yield from key_paths(value, f"{path}[]")
 
 
-def test_the_example_scene_runs_and_writes_the_results_keys_the_page_shows(tmp_path, capsys):
+@pytest.fixture(scope="module")
+def example_results(tmp_path_factory) -> dict:
+    """The results of the page's example scene, run as a student would."""
     scene_text, = fenced("toml")
     loads(scene_text)   # every key of the example is one the reader accepts
-    scene = tmp_path / "example.toml"
+    folder = tmp_path_factory.mktemp("example")
+    scene = folder / "example.toml"
     scene.write_text(scene_text, encoding="utf-8")
-    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "forces,errors"]) == 0
-    written = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert main(["run", str(scene), "--out", str(folder / "out"), "--only", "forces,errors"]) == 0
+    return json.loads((folder / "out" / "results.json").read_text(encoding="utf-8"))
+
+
+def test_the_example_scene_runs_and_writes_the_results_keys_the_page_shows(example_results):
+    written = example_results
     shown = json.loads(fenced("json")[0])
     # The page's point "B", link "3" and reaction "R23" stand for every one: their names are the example's.
     def generic(document) -> set[str]:
@@ -60,6 +67,36 @@ def test_the_example_scene_runs_and_writes_the_results_keys_the_page_shows(tmp_p
     if not written["warnings"]:   # the example's scene runs without a warning: the list is empty
         shown_paths = {path for path in shown_paths if not path.startswith(".warnings[]")}
     assert shown_paths <= written_paths, sorted(shown_paths - written_paths)
+
+
+def test_the_values_the_extensions_give_for_the_example_are_its_run_s(example_results):
+    """The contract's example results show the file's form with numbers of their own (link 3 at 48.5°, a balancing
+    moment of 412 N·m); the extensions page gives the example scene's own, which a student running it finds."""
+    extensions = (ROOT / "docs" / "scene-format-extensions.md").read_text(encoding="utf-8")
+    row = next(line for line in extensions.splitlines() if line.startswith("| the contract's example results |"))
+    values, _, hand = row.partition("; its `[measured.5]`")
+    given = {key: float(value.replace("−", "-")) for key, value in re.findall(r"`(\w+)`(?: of)? (−?[\d.]+)", values)}
+    position, = (entry for entry in example_results["positions"] if entry["index"] == 5)
+    velocity, acceleration = position["plans"]["velocity"], position["plans"]["acceleration"]["values"]
+    run = {"angle_deg": position["links"]["3"]["angle_deg"], "VB": velocity["values"]["VB"],
+           "omega4": velocity["values"]["omega4"], "aB": acceleration["aB"], "epsilon4": acceleration["epsilon4"],
+           "balancing_moment": position["forces"]["balancing_moment"]}
+    assert set(given) == set(run), row
+    for key, value in given.items():
+        digits = len(str(value).split(".")[1])
+        assert run[key] == pytest.approx(value, abs=0.51 * 10.0 ** -digits), key
+    # The hand reading: pb (mm) at the plan's μV over lBC, and its δ against the analytic ω4.
+    reading = re.search(r"pb = ([\d.]+) mm reads `omega4` ([\d.]+) rad/s \(\1 mm · ([\d.]+) \(m/s\)/mm / lBC "
+                        r"([\d.]+) m\), δ (−[\d.]+) %", hand)
+    assert reading is not None, row
+    pb, omega4, scale, length, percent = (float(value.replace("−", "-")) for value in reading.groups())
+    assert velocity["scale"] == pytest.approx(scale, rel=1e-4)
+    assert pb * velocity["scale"] / length == pytest.approx(omega4, abs=0.005)
+    measured, = (row for row in example_results["errors"]
+                 if (row["position"], row["quantity"], row["source"]) == (5, "omega4", "measured"))
+    assert measured["plan"] == pytest.approx(omega4)
+    assert measured["percent"] == pytest.approx(percent, abs=0.005)
+    assert percent == pytest.approx((run["omega4"] - omega4) / run["omega4"] * 100.0, abs=0.005)
 
 
 def test_the_python_example_works_as_printed(monkeypatch):
