@@ -1292,13 +1292,15 @@ def test_rrr_too_short_to_reach() -> None:
     assert stage == "solve" and type(error) is AssemblyError
     # The crank's reach told after it, as the Python interface tells it too: ±acos(−0.35) = ±110.4873°, inward.
     # Then the lengths that turn it round: A–C = 0.5 ∓ 0.2 m at φ = 0° and 180°, so BC > 0.7 − 0.4 and |0.4 − BC| <
-    # 0.3; AB with BC = 0.2 would need AB > 0.5 and AB < 0.5, and is not named.
+    # 0.3; AB with BC = 0.2 would need AB > 0.5 and AB < 0.5, and is not named.  The scene writes start = 0.0, which
+    # a swing refuses: the advice says to leave it out.
     assert str(error) == ("B cannot be assembled at position 5 (φ = 120°) in group II(3,4): "
                           "A–C = 0.6245 m > AB + BC = 0.6 m; the scene's keys that set it: groups[0].lengths = [0.4, "
                           "0.2], driver.length = 0.2, frame.points.O, frame.points.C; link 2 reaches only from "
                           "-110.48° to 110.48° (at each "
                           "end two links stand in line); since it cannot turn round, drive it as a rocker: "
-                          "driver.swing = [from, to] in degrees, e.g. driver.swing = [-109, 109]; or, if link 2 is "
+                          "driver.swing = [from, to] in degrees, e.g. driver.swing = [-109, 109]; a rocking crank's "
+                          "positions run once over its swing, so also leave positions.start out; or, if link 2 is "
                           "meant to turn round, check the lengths: over the turn A–C runs from 0.3 m (at φ = 0°) to "
                           "0.7 m (at φ = 180°), so the crank turns round only where AB + BC > 0.7 m and |AB − BC| < "
                           "0.3 m: groups[0].lengths[1] (BC) from 0.3001 m to 0.6999 m with AB as given")
