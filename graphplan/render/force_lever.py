@@ -64,6 +64,10 @@ from .primitives import to_xy as _xy
 # beside it (a name's box is 4.6 mm high, kept 0.8 mm off another's), where at BESIDE_MM the two arrows read as one
 # and one name stood by the other's head.
 LEVER_BESIDE_MM = 6.0
+# How far ahead along its line (mm) a load set beside on a slant stands (:func:`_pushing_or_pulling`): its leader,
+# LEVER_BESIDE_MM long, leaves the point some 30° ahead of square to the line, and the arrow stands 5.2 mm beside
+# its line, as far apart as a name by each of two heads needs.
+SLANT_AHEAD_MM = 3.0
 # The lever's field on a force sheet, which its layers are named after (lever-plan, lever-arm-G3): a course sheet
 # tells the part that holds the lever by them.
 LEVER_FIELD = "lever"
@@ -79,7 +83,8 @@ _RAY = Stroke(0.25, "#555555")
 
 def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive],
                         lines: Callable[[], BaseGeometry],
-                        others: Sequence[complex] = ()) -> tuple[complex, complex, complex]:
+                        others: Sequence[complex] = (),
+                        senses: Sequence[complex] = ()) -> tuple[complex, complex, complex]:
     """The arrow of a load on the lever at its point ``at``: from it, or onto it where a load drawn before
     already lies along that line from it and the other side of the point is clear of ``lines()``, or else
     :data:`LEVER_BESIDE_MM` beside that line (:data:`BESIDE_MM` where only that is clear); with the shift that sets
@@ -90,9 +95,12 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     by a head; one pulling from the point and one pushing onto it read as
     two, and both at their point, as a hand drawing shows them.  Where the
     other side is taken (the arms run from the pole, another load comes
-    in), the second stands beside the first, tied to the point; where that
-    too is taken, it runs on beyond the first (:func:`unstacked`).  Set
-    beside, it keeps to its line's side of the pole where either side is clear.
+    in), the second stands beside the first, tied to the point by a leader
+    that lies along no line and no arrow of the lever, drawn or to come from
+    the point along its load's line (``senses``), else a little ahead on a
+    slanting leader; where that too is taken, it runs on beyond the first
+    (:func:`unstacked`).  Set beside, it keeps to its line's side of the pole
+    where either side is clear.
 
     An arrow so drawn that passes another point of the lever, ``others``,
     within :data:`POINT_CLEAR_MM` is drawn the first of these ways that
@@ -113,12 +121,28 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     def crosses_pole(shift: complex) -> bool:  # the lever's moments are about the pole, at 0
         return (at * unit.conjugate()).imag * ((at + shift) * unit.conjugate()).imag < 0
 
+    def tied(shift: complex) -> bool:
+        """Whether the leader from the point to an arrow ``shift`` beside it lies along no line and no other arrow,
+        drawn or still to be drawn from the point along its load's line (``senses``): one along the lever's line
+        e–s5 or along Mu5′'s shaft is not seen, and the arrow reads as a load at another point (the Russian shaper's
+        G6 and F6 at e)."""
+        tie = LineString((_xy(at), _xy(at + shift)))
+        shafts = [LineString((item.start, item.end)) for item in arrows if isinstance(item, Arrow) and item.length > 0]
+        if any(abs((shift * sense.conjugate()).imag) < math.sin(math.radians(10.0)) * abs(shift) for sense in senses):
+            return False
+        return all(tie.intersection(line).length < abs(shift) / 2 for line in (lines(), *(shaft.buffer(0.8)
+                                                                                          for shaft in shafts)))
+
     away, onto = (at, at + vector), (at - vector, at)
     # A side is taken where it is clear at BESIDE_MM, and drawn there LEVER_BESIDE_MM off where that is clear too: a
     # side clear only that far off (the knee press's F6 at d, past Fu6 and G6 on its line) left the next load along
     # the line (Ff16) no side, and it stood beyond another on its line, the two reading as one arrow broken by a head.
     sides = [(shift * LEVER_BESIDE_MM / BESIDE_MM, shift)
              for shift in sorted((1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM), key=crosses_pole)]
+    # Where a line or an arrow lies along each side's leader, the arrow stands beside and SLANT_AHEAD_MM ahead along
+    # its own line, on a leader as long, slanting off the line along the side.
+    slants = [side / abs(side) * math.sqrt(LEVER_BESIDE_MM ** 2 - SLANT_AHEAD_MM ** 2) + unit * SLANT_AHEAD_MM
+              for side, _ in sides]
 
     def first_way(keep_off: bool, along: float = 1.0) -> tuple[complex, complex, complex] | None:
         def fits(start: complex, end: complex, ok: Callable[[complex, complex], bool]) -> bool:
@@ -129,10 +153,13 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
         if fits(*onto, lambda start, end: clear(start, end, along)):
             return (*onto, 0j)
         for wide, shift in sides:
-            if fits(away[0] + shift, away[1] + shift, lambda start, end: clear(start, end, along)):
-                if fits(away[0] + wide, away[1] + wide, lambda start, end: clear(start, end, along)):
+            if fits(away[0] + shift, away[1] + shift, lambda start, end: clear(start, end, along)) and tied(shift):
+                if fits(away[0] + wide, away[1] + wide, lambda start, end: clear(start, end, along)) and tied(wide):
                     shift = wide
                 return (away[0] + shift, away[1] + shift, shift)
+        for slant in slants:
+            if fits(away[0] + slant, away[1] + slant, lambda start, end: clear(start, end, along)) and tied(slant):
+                return (away[0] + slant, away[1] + slant, slant)
         return None
 
     chosen = first_way(False) or (*unstacked(*away, at, arrows), 0j)
@@ -281,7 +308,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         unit = force / abs(force)
         at = mm(image) + shift
         others = [spot for spot in spots if abs(spot - mm(image)) >= ZERO_MM]
-        start, end, beside = _pushing_or_pulling(at, max(length, LEAST_ARROW_MM) * unit, arrows, lines, others)
+        senses = [other / abs(other) for _, other_image, other, _, other_shift in named
+                  if other != 0 and abs(mm(other_image) + other_shift - at) < ZERO_MM]
+        start, end, beside = _pushing_or_pulling(at, max(length, LEAST_ARROW_MM) * unit, arrows, lines, others,
+                                                 senses)
         arrows.append(Arrow(_xy(start), _xy(end), stroke, 3.0, svg_id("lever", name)))
         if beside:
             leaders.append(Polyline((_xy(at), _xy(start)), Stroke(LEADER_WIDTH, stroke.colour)))
@@ -339,11 +369,14 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     lettered = list(arm_anchors)
     loads, points = anchors[:len(load_points)], anchors[len(load_points):]
     unnamed: list[Anchor] = []
+    # The free ends that a name, whose point keeps an arrow unnamed already, stood by: every name is kept
+    # LED_NAME_HEAD_CLEAR_MM off them when placed again (the knee press's Mf14″ by G6's head, beside Fu6 tied to d).
+    kept_off: list[Circle] = []
     while True:
         # Clear of the loads' arrows' ink: a letter touching one reads as naming that load (the knee press's d, by its
         # dot, on the 0.45 mm line of F6 pulling from it, its box 0.17 mm off the arrow's middle).
         labels = letters_placed(loads + points + lettered, figure, reach_farther=False, unnamed=unnamed,
-                                shafts_inked=True)
+                                shafts_inked=True, inked=kept_off)
         if near := [anchor for anchor, placed in zip(lettered, labels.texts[len(loads) + len(points):])
                     if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
                     or label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]:
@@ -358,6 +391,12 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                  and load_points[anchor.text] not in taken
                  and (label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
                       or _by_another_head(anchor, placed, heads, labels.leaders))]
+        by_heads = {head for anchor, placed in zip(loads, labels.texts) if anchor.text != balancing_name
+                    and load_points[anchor.text] in taken
+                    for head in _other_heads_by(anchor, placed, heads, labels.leaders)}
+        if not lying and (new_heads := by_heads - {circle.centre for circle in kept_off}):
+            kept_off += [Circle(head, LED_NAME_HEAD_CLEAR_MM) for head in sorted(new_heads)]
+            continue
         if not lying:
             # A point whose letter the names round it left only a spot on a line (the class III triad's s4 and s5
             # among the loads at 3.5 mm) has one of its loads given under the lever, as a name lying on a line is.
@@ -421,16 +460,19 @@ def _by_another_head(anchor: Anchor, text: Text, heads: Sequence[tuple[float, fl
                      leaders: Sequence[Polyline]) -> bool:
     """Whether the placed name of ``anchor`` stands nearer another of the loads' free ends ``heads`` than its own: a
     reader takes it for that load's name, where it stands by that head even on a leader of its own."""
+    return bool(_other_heads_by(anchor, text, heads, leaders))
+
+
+def _other_heads_by(anchor: Anchor, text: Text, heads: Sequence[tuple[float, float]],
+                    leaders: Sequence[Polyline]) -> list[tuple[float, float]]:
+    """The other loads' free ends of ``heads`` that the placed name of ``anchor`` stands nearer than its own
+    (:func:`_by_another_head`)."""
     led = any(led_from(leader, anchor) for leader in leaders)
     box = text_box(text)
     own = box.distance(ShapelyPoint(anchor.at))
-    for head in heads:
-        if math.dist(head, anchor.at) <= 1e-6:
-            continue
-        apart = box.distance(ShapelyPoint(head))
-        if apart < own - OTHER_HEAD_MARGIN_MM and (not led or apart < LED_NAME_HEAD_CLEAR_MM):
-            return True
-    return False
+    return [head for head in heads if math.dist(head, anchor.at) > 1e-6
+            and (apart := box.distance(ShapelyPoint(head))) < own - OTHER_HEAD_MARGIN_MM
+            and (not led or apart < LED_NAME_HEAD_CLEAR_MM)]
 
 
 # A name whose box stands this near a point's dot (mm) takes the room of that point's letter: the letter stands beside
