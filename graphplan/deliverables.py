@@ -244,7 +244,8 @@ def _machine_sheets(scene: Scene, machine: list[Layer], rotor: list[Layer],
     details = details_of(scene.project, scene.title, form_of(scene.locale))
     details = dataclasses.replace(details, title=details.title or scene.title)
     dynamics = [dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet)] if machine else []
-    balancing = [balancing_panel(rotor, scene.locale)] if rotor else []
+    balancing = [balancing_panel(rotor, scene.locale, scene.drawing.sheet, lambda: _larger_balancing(scene))] \
+        if rotor else []
     return [Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size)
             for sheet in machine_sheets(dynamics, balancing, scene.drawing.sheet, scene.locale, details)]
 
@@ -255,6 +256,15 @@ def _balancing_layers(scene: Scene) -> list[Layer]:
 
     assert scene.balancing is not None
     return balancing_layout.layout(balance(scene.balancing), strings(scene.locale))
+
+
+def _larger_balancing(scene: Scene) -> list[list[Layer]]:
+    """The balancing drawing with its polygons drawn larger, for a sheet with room."""
+    from .render import balancing as balancing_layout
+    from .rotor_balancing import balance
+
+    assert scene.balancing is not None
+    return balancing_layout.larger_layouts(balance(scene.balancing), strings(scene.locale))
 
 
 def _dynamics_words(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics) -> dict[str, str]:
@@ -530,7 +540,8 @@ def _course_panels(analysis: Analysis, machine: list | None = None, redrawn: Red
             return ((load_diagrams_panel(drawn, scene.locale, field=field),) for field in SMALLER_FIELDS)
     dynamics = (dynamics_panel(machine, scene.locale, redrawn, scene.drawing.sheet),) if machine is not None else ()
     # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
-    balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()
+    balancing = (balancing_panel(_balancing_layers(scene), scene.locale, scene.drawing.sheet,
+                                 lambda: _larger_balancing(scene)),) if scene.balancing is not None else ()
     return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing, loads=loads,
                          smaller_loads=smaller_loads)
 

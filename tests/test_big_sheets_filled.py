@@ -1,16 +1,20 @@
-"""On a big sheet with room the kinematic diagrams and the dynamics are drawn larger, filling it as a course
-project does, at whole millimetres per interval and standard scales that agree with what is drawn."""
+"""On a big sheet with room the kinematic diagrams, the dynamics and the rotor's balancing polygons are drawn larger,
+filling it as a course project does, at whole millimetres per interval and standard scales that agree with what is
+drawn."""
 
 from __future__ import annotations
 
+import json
 import math
 import re
+from xml.etree import ElementTree
 
 import numpy as np
 import pytest
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.cli import main
 from graphplan.dynamics import equivalent_model_of
 from graphplan.flywheel import flywheel_for
 from graphplan.kinematic_diagrams import of_analysis
@@ -18,6 +22,7 @@ from graphplan.render.dynamics import Redrawings, layout
 from graphplan.render.primitives import Polyline, Text
 from graphplan.render.sheet import course_sheets, diagrams_panel, dynamics_panel, dynamics_sheet, kinematics_sheet
 from graphplan.scales import standard_scale
+from graphplan.starters import starter
 
 
 @pytest.fixture(scope="module")
@@ -135,3 +140,61 @@ def test_je_turned_runs_at_its_own_angle_scale_so_that_the_cycle_above_may_run_l
     mu_j = _number(r"μJ = ([0-9.]+) kg·m²/mm", _written(sheet, "dynamics-inertia"))
     widths = [x for x, _ in curve.points]
     assert max(widths) - min(widths) == pytest.approx(float(np.ptp(model.inertia)) / mu_j, rel=1e-9)
+
+
+def _balancing_drawn(svg_path) -> tuple[dict[str, float], dict[str, float], float]:
+    """Of a drawing of the rotor's balancing: each plane's correction drawn (mm, tail to tip), the μ its caption
+    gives, and the drawing's width (mm) over its polygons and captions."""
+    svg = "{http://www.w3.org/2000/svg}"
+    root = ElementTree.parse(svg_path).getroot()
+    lengths, scales, xs = {}, {}, []
+    for group in root.iter(f"{svg}g"):
+        name = group.get("id", "")
+        found = re.fullmatch(r"(?:balancing-(?:\d+-)?)?plane-(\w+)-m(\w+)r(\w+)", name)
+        if found and found.group(1) == found.group(2) == found.group(3):
+            shaft, head = (re.findall(r"(-?[\d.]+),(-?[\d.]+)", path.get("d")) for path in group.iter(f"{svg}path"))
+            lengths[found.group(1)] = math.dist(map(float, shaft[0]), map(float, head[0]))
+        found = re.fullmatch(r"(?:balancing-(?:\d+-)?)?plane-(\w+)-caption", name)
+        if found:
+            words = " ".join("".join(text.itertext()) for text in group.iter(f"{svg}text"))
+            scales[found.group(1)] = _number(r"μ = ([0-9.]+) kg·m/mm", words)
+            xs += [float(text.get("x")) for text in group.iter(f"{svg}text")]
+        if re.match(r"(?:balancing-(?:\d+-)?)?plane-", name):
+            xs += [float(value) for path in group.iter(f"{svg}path")
+                   for value, _ in re.findall(r"(-?[\d.]+),(-?[\d.]+)", path.get("d"))]
+    return lengths, scales, max(xs) - min(xs) if xs else 0.0
+
+
+def test_the_balancing_polygons_fill_an_a1_sheet_each_correction_as_long_as_its_caption_s_scale_draws_it(tmp_path):
+    """The rotor starter's two polygons stood at their own drawing's scales in the middle of an A1, a twentieth of it
+    drawn on; on a sheet with room they are drawn larger, at standard scales, each correction as long as its
+    mass-radius product (results.json) over the μ its caption gives."""
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(starter("rotor"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--sheet", "A1"]) == 0
+    out = tmp_path / "out"
+    corrections = {plane["plane"]: plane["mass_radius"]
+                   for plane in json.loads((out / "results.json").read_text(encoding="utf-8"))["balancing"]["planes"]}
+    own_lengths, own_scales, _ = _balancing_drawn(out / "rotor_balancing.svg")
+    lengths, scales, drawn_width = _balancing_drawn(out / "sheet_1.svg")
+    assert set(lengths) == set(scales) == set(corrections) == {"L", "R"}
+    for plane, product in corrections.items():
+        assert scales[plane] == standard_scale(scales[plane])
+        assert scales[plane] < own_scales[plane]  # drawn larger than in the drawing's own file
+        assert lengths[plane] == pytest.approx(product / scales[plane], abs=0.05)
+        assert own_lengths[plane] == pytest.approx(product / own_scales[plane], abs=0.05)
+    frame = ElementTree.parse(out / "sheet_1.svg").getroot()
+    sheet_width = float(frame.get("viewBox").split(",")[2])
+    assert drawn_width > 0.6 * sheet_width
+
+
+def test_the_balancing_polygons_stay_as_they_were_on_a_sheet_that_holds_them_only_apart(tmp_path):
+    """On an upright A4 the two planes stand one under the other at the drawing's own scales: no larger way fits."""
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(starter("rotor"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--sheet", "A4"]) == 0
+    _, own_scales, _ = _balancing_drawn(tmp_path / "out" / "rotor_balancing.svg")
+    drawn = {}
+    for path in sorted((tmp_path / "out").glob("sheet_*.svg")):
+        drawn.update(_balancing_drawn(path)[1])
+    assert drawn == own_scales

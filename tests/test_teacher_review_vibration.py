@@ -25,6 +25,7 @@ from scipy.optimize import brentq
 from sheet_texts import flat
 
 from graphplan.run import run
+from graphplan.scales import standard_scale
 from graphplan.scene import loads as scene_from_text
 
 G = 9.80665
@@ -254,17 +255,22 @@ def test_a_discs_polygon_is_its_masses_products_head_to_tail_closed_by_the_corre
     assert abs(drawn["mbrb"][1] - drawn["m1r1"][0]) < 0.01
 
 
-def test_the_sheet_draws_the_polygons_at_the_scale_of_their_own_drawing(tmp_path):
+def test_the_sheet_draws_the_polygons_of_their_own_drawing_at_the_scale_its_caption_gives(tmp_path):
+    """The sheet's polygons are their own drawing's, each vector turned as there and as long at the μ the sheet's
+    caption gives: on an A3 with room a standard step or more finer, drawn larger as the sheets draw the diagrams
+    and the dynamics."""
     folder = tmp_path / "out"
     run(scene_from_text(LONG + '[drawing]\nsheet = "A3"\n'), folder)
     own = (folder / "rotor_balancing.svg").read_text(encoding="utf-8")
     sheet = (folder / "sheet_1.svg").read_text(encoding="utf-8").replace('id="balancing-plane-', 'id="plane-')
     for plane in "LR":
-        assert _scale(sheet, plane) == _scale(own, plane)
+        on_its_own, on_the_sheet = _scale(own, plane), _scale(sheet, plane)
+        assert on_the_sheet < on_its_own and on_the_sheet == standard_scale(on_the_sheet)
+        larger = on_its_own / on_the_sheet
         alone, on_sheet = _drawn_vectors(own, plane), _drawn_vectors(sheet, plane)
         assert set(alone) == set(on_sheet)
         for name, (start, tip) in alone.items():
-            assert abs((tip - start) - (on_sheet[name][1] - on_sheet[name][0])) < 0.005
+            assert abs((tip - start) * larger - (on_sheet[name][1] - on_sheet[name][0])) < 0.005 * larger
 
 
 def test_the_corrections_angle_is_drawn_from_a_dashed_x_direction_counter_clockwise(tmp_path):

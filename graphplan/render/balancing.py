@@ -95,6 +95,9 @@ MOST_STEPS = 5000
 # whose arc crosses the fewest sides, and of those the one that sends the fewest names out on leaders.
 ANGLE_RADII_MM = (7.0, 5.5, 4.5, 9.0, 11.0)
 
+# The layer of the drawing's title over its polygons: a sheet stands it as the drawing's heading.
+TITLE_LAYER = "balancing-title"
+
 _SHARE = Stroke(0.5)
 _CORRECTION = Stroke(0.8, "#a83a1f")
 _REFERENCE = Stroke(0.25, "#333333", (2.5, 1.5))
@@ -102,9 +105,15 @@ _ANGLE = Stroke(0.3, "#a83a1f")
 _LEADER = Stroke(0.18, "#a83a1f", (1.0, 1.0))
 _SHARE_LEADER = Stroke(0.18, "#333333", (1.0, 1.0))
 
-def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
-    """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under,
-    the title over them broken to their width."""
+# The fields (mm) the polygons are drawn larger to on a sheet with room (:func:`larger_layouts`), as a course project
+# fills its sheet: at POLYGON_FIELD_MM the rotor starter's two planes took a twentieth of an A1, in its middle.
+LARGER_FIELDS_MM = (120.0, 160.0, 200.0, 250.0, 320.0)
+
+
+def layout(result: BalancingResult, text: Mapping[str, str] | None = None,
+           field: float = POLYGON_FIELD_MM) -> list[Layer]:
+    """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, each at the
+    standard scale that draws it within ``field`` mm, captions under, the title over them broken to their width."""
     words = {**strings("en"), **(text or {})}
     layers: list[Layer] = []
     cursor = 0.0
@@ -113,8 +122,8 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
     # None but for a one-plane balancing, whose only plane says it under its caption.
     couple = static_couple(result)
     last = len(result.planes) - 1
-    laid = [laid_off(plane) for plane in result.planes]
-    panels = [_polygon(plane, _scale(plane), words, placed, couple if k == last else None)
+    laid = [laid_off(plane, field) for plane in result.planes]
+    panels = [_polygon(plane, _scale(plane, field), words, placed, couple if k == last else None)
               for k, plane in enumerate(laid)]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
@@ -131,7 +140,7 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
         cursor += width + GAP_MM
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     size, title = _title(words["bal_title"].format(count=Count(len(result.planes))), cursor - GAP_MM)
-    layers.append(Layer("balancing-title", tuple(
+    layers.append(Layer(TITLE_LAYER, tuple(
         Text((left, top + TITLE_GAP_MM + (len(title) - 1 - k) * CAPTION_LINE * size), line, size, "start",
              weight="bold")
         for k, line in enumerate(title))))
@@ -152,6 +161,11 @@ def _title(title: str, width: float) -> tuple[float, list[str]]:
     return size, lines
 
 
+def larger_layouts(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[list[Layer]]:
+    """:func:`layout` with the polygons drawn within each of :data:`LARGER_FIELDS_MM`, for a sheet with room."""
+    return [layout(result, text, field) for field in LARGER_FIELDS_MM]
+
+
 def balancing_svg(result: BalancingResult, text: Mapping[str, str] | None = None) -> str:
     """The balancing polygons of ``result`` as SVG text."""
     return to_svg(layout(result, text))
@@ -163,23 +177,24 @@ def plane_scale(plane: CorrectionPlane) -> float:
     return _scale(laid_off(plane))
 
 
-def _scale(plane: CorrectionPlane) -> float:
-    """μ (kg·m/mm) of ``plane``'s polygon in the order its vectors stand in."""
+def _scale(plane: CorrectionPlane, field: float = POLYGON_FIELD_MM) -> float:
+    """μ (kg·m/mm) of ``plane``'s polygon in the order its vectors stand in, drawn within ``field`` mm."""
     extent = _extent(plane)
-    return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else 1.0
+    return standard_scale(extent / field) if extent > 0 else 1.0
 
 
 # Remembered: the sheets and the drawing's own file lay out the same planes, and the scale asks for them again.
 @lru_cache(maxsize=64)
-def laid_off(plane: CorrectionPlane) -> CorrectionPlane:
+def laid_off(plane: CorrectionPlane, field: float = POLYGON_FIELD_MM) -> CorrectionPlane:
     """``plane`` with its shares in the order the drawing lays them off: the masses' order where that draws every
     vector in its place in the chain, else the first order (of :data:`MOST_ORDERS`) that draws fewest apart, and of
     those the one whose corners open widest; its equation written in that order.
 
     The rotor starter's plane L laid (m3r3)L, 6.7 mm long, back along (m2r2)L: drawn beside the chain with dashed
     leaders to keep its arrowhead off the other's, the polygon read as open.  Laid off before (m1r1)L it closes
-    with every side in its place, as a student may lay the shares in any order."""
-    scale = _scale(plane)
+    with every side in its place, as a student may lay the shares in any order.  ``field``: as the polygon is drawn
+    (:func:`layout`), for what stands apart depends on the millimetres it is drawn in."""
+    scale = _scale(plane, field)
 
     def mm(value: complex) -> complex:
         return value / scale

@@ -37,7 +37,7 @@ import shapely
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
 from ..load_diagrams import LoadDiagram
-from ..locale import strings
+from ..locale import Count, strings
 from ..memo import OwnedMemo
 from ..misreadings import SheetPolygons
 from ..scales import finer_standard_scale, format_scale, next_standard_scale, standard_scale
@@ -989,21 +989,26 @@ def _apart(name: str, label: str, drawn: Sequence[Sequence[Layer]], continued: s
     part's width; last of its ways the part stands bare, which a sheet holds
     alone.
     """
-    from .diagrams import stacked, title_texts
+    from .diagrams import stacked
 
     parts: list[Panel] = []
     for k, part in enumerate(drawn if len(drawn) > 1 else ()):
         bare = Panel(f"{name}-{k + 1}", tuple(part), to_scale=False)
-        if not k:
-            parts.append(bare)
-            continue
-        x0, _, x1, top = bare.extent
-        headings = dict.fromkeys(title_texts(continued.format(title=label), (x0, top), room)
-                                 for room in (math.inf, x1 - x0))
-        first, *others = (replace(bare, layers=(*bare.layers, Layer(force_rows.HEADING_LAYER, heading)))
-                          for heading in headings)
-        parts.append(replace(first, alternatives=(*others, bare), continues=parts[-1].name))
+        parts.append(_headed_part(bare, continued.format(title=label), parts[-1].name) if k else bare)
     return Panel(name, tuple(stacked(drawn)), tuple(parts), label, to_scale=False, drawn_alone=drawn_alone)
+
+
+def _headed_part(bare: Panel, title: str, continues: str = "") -> Panel:
+    """The part ``bare`` under ``title``, going on from the part ``continues`` (none for a first part): the title on
+    one line where the sheet has the room, else broken to the part's width; last of its ways the part bare, which a
+    sheet holds alone."""
+    from .diagrams import title_texts
+
+    x0, _, x1, top = bare.extent
+    headings = dict.fromkeys(title_texts(title, (x0, top), room) for room in (math.inf, x1 - x0))
+    first, *others = (replace(bare, layers=(*bare.layers, Layer(force_rows.HEADING_LAYER, heading)))
+                      for heading in headings)
+    return replace(first, alternatives=(*others, bare), continues=continues)
 
 
 def _lettered_diagrams(analysis: Analysis, axis: float, field: float,
@@ -1148,23 +1153,76 @@ def dynamics_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1",
     return _sheets(panels, sheet, locale, "sheet_dynamics", title, None, details, first, count)
 
 
-def balancing_panel(layers: Sequence[Layer], locale: str) -> Panel:
+def balancing_panel(layers: Sequence[Layer], locale: str, sheet: str | None = None,
+                    larger: Callable[[], Sequence[Sequence[Layer]]] | None = None) -> Panel:
     """The balancing drawing (:func:`graphplan.render.balancing.layout`) as a panel to no length scale.
 
     Where no sheet holds it whole (two planes side by side on an A4), each plane's polygon with its caption
     stands apart, the title block naming what they are; a part no sheet holds is named by its plane, as its caption
-    names it ("Balancing of the rotor: Correction plane II"), not by its panel's id."""
+    names it ("Balancing of the rotor: Correction plane II"), not by its panel's id.  ``larger()`` lays out the
+    same drawing with its polygons drawn larger (:func:`graphplan.render.balancing.larger_layouts`): those an empty
+    ``sheet`` holds are the panel's ways, largest first, as the dynamics' are (:func:`dynamics_panel`), their parts
+    the usual drawing's."""
+    usual = _balancing_drawn(layers, locale, sheet)
+    form = form_of(locale)
+    if larger is None or sheet is None or sheet == "none" or not holds(sheet, form, width(usual), height(usual)):
+        return usual
+    # Fields a step of the standard scales apart draw a polygon at one scale: each drawing once.
+    sizes = {(round(width(usual), 3), round(height(usual), 3))}
+    ways = []
+    for drawn in larger():
+        way = replace(usual, layers=_title_as_heading(drawn))
+        size = (round(width(way), 3), round(height(way), 3))
+        if size not in sizes and holds(sheet, form, *size):
+            sizes.add(size)
+            ways.append(way)
+    ways.sort(key=lambda way: -width(way) * height(way))
+    return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
+
+
+def _balancing_drawn(layers: Sequence[Layer], locale: str, sheet: str | None = None) -> Panel:
+    """The balancing drawing ``layers`` as a panel whose parts are its planes' polygons, where it has two.
+
+    Each plane that stands apart does so under the drawing's title, the
+    second "continued", as the diagrams' parts do: on an upright A4 the two
+    polygons stood with their captions alone, the title block all that said
+    what they were.  Where the first plane's title alone keeps the second
+    off its ``sheet`` (the English rotor starter's two planes, one under the
+    other on an upright A4), the first stands bare: a sheet more for a
+    heading is no saving.
+    """
     planes: dict[str, list[Layer]] = {}
     for layer in layers:
         stem, _, part = layer.name.rpartition("-")
         if layer.name.startswith("plane-") and part in ("reference", "vectors", "leaders", "labels", "caption"):
             planes.setdefault(stem, []).append(layer)
     label = labels(locale)["sheet_balancing"]
-    plane = strings(locale)["bal_disc"]
-    parts = tuple(Panel(f"balancing-{k + 1}", tuple(own),
-                        label=f"{label}: {plane.format(name=stem.removeprefix('plane-'))}", to_scale=False)
-                  for k, (stem, own) in enumerate(planes.items())) if len(planes) > 1 else ()
-    return Panel("balancing", tuple(layers), parts, label=label, to_scale=False)
+    text = strings(locale)
+    title = text["bal_title"].format(count=Count(len(planes)))
+    parts: list[Panel] = []
+    for k, (stem, own) in enumerate(planes.items() if len(planes) > 1 else ()):
+        bare = Panel(f"balancing-{k + 1}", tuple(own),
+                     label=f"{label}: {text['bal_disc'].format(name=stem.removeprefix('plane-'))}", to_scale=False)
+        heading = text["force_sheet_continued"].format(title=title) if k else title
+        parts.append(_headed_part(bare, heading, parts[-1].name if k else ""))
+    panel = Panel("balancing", _title_as_heading(layers), tuple(parts), label=label, to_scale=False)
+    if not parts or sheet is None or sheet == "none":
+        return panel
+    first_bare = replace(panel, parts=(parts[0].ways[-1], *parts[1:]))
+    form = form_of(locale)
+    with contextlib.suppress(SceneError):
+        if len(pack([first_bare], sheet, form)) < len(pack([panel], sheet, form)):
+            return first_bare
+    return panel
+
+
+def _title_as_heading(layers: Sequence[Layer]) -> tuple[Layer, ...]:
+    """The balancing drawing's ``layers`` with its title as the heading of a drawing on a sheet, by which the packing
+    tells a page of its parts that stands without one (:attr:`~graphplan.render.packing.Page.bare`)."""
+    from .balancing import TITLE_LAYER as BALANCING_TITLE
+
+    return tuple(Layer(force_rows.HEADING_LAYER, layer.items) if layer.name == BALANCING_TITLE else layer
+                 for layer in layers)
 
 
 @dataclass(frozen=True)
