@@ -125,6 +125,9 @@ def test_conclusions_repeat_what_the_note_found(run, name, locale):
     (structure,) = item(items, locale, "note_conclusion_structure")
     formula = re.search(pattern(text["note_structure_formula"]), before)
     assert (structure.group("formula"), structure.group("klass")) == (formula.group("formula"), formula.group("klass"))
+    # The degrees of freedom under the symbol the note's formula gives them (the Chinese F, not W).
+    symbol = text["dof_formula"].split("=")[0].strip()
+    assert re.search(rf"(?<!\w){symbol} = {structure.group('w')}(?!\d)", structure.group(0)), structure.group(0)
 
     (ratio,) = item(items, locale, "note_conclusion_ratio")
     strokes = re.search(pattern(text["note_strokes"]), before)
