@@ -8,6 +8,7 @@ shows are the keys a run writes, and its Python example works as printed.
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -69,9 +70,35 @@ def test_the_example_scene_runs_and_writes_the_results_keys_the_page_shows(examp
     assert shown_paths <= written_paths, sorted(shown_paths - written_paths)
 
 
+def _example_kinematics(phi: float) -> dict[str, float]:
+    """The example's four-bar at crank angle ``phi`` (rad), worked here from its lengths alone: B where the circles
+    of AB about A and BC about C cross, left of A→C; its velocity and acceleration, ω4 and ε4 by central differences
+    of the closed form in φ (ω = −17 rad/s, ε = 0)."""
+    omega, crank, ab, bc, c = -17.0, 0.175, 0.55, 0.325, 0.55j
+
+    def joint_b(angle: float) -> complex:
+        a = crank * np.exp(1j * angle)
+        to_c = c - a
+        spread = np.arccos((ab ** 2 + abs(to_c) ** 2 - bc ** 2) / (2.0 * ab * abs(to_c)))
+        return a + ab * np.exp(1j * (np.angle(to_c) + spread))
+
+    def rocker(angle: float) -> float:
+        return float(np.angle(joint_b(angle) - c))
+
+    h = 1e-4
+    b = [joint_b(phi + k * h) for k in (-1, 0, 1)]
+    rock = np.unwrap([rocker(phi + k * h) for k in (-1, 0, 1)])
+    return {"angle_deg": math.degrees(np.angle(b[1] - crank * np.exp(1j * phi))) % 360.0,
+            "VB": abs((b[2] - b[0]) / (2 * h)) * abs(omega),
+            "omega4": (rock[2] - rock[0]) / (2 * h) * omega,
+            "aB": abs((b[2] - 2 * b[1] + b[0]) / h ** 2) * omega ** 2,
+            "epsilon4": (rock[2] - 2 * rock[1] + rock[0]) / h ** 2 * omega ** 2}
+
+
 def test_the_values_the_extensions_give_for_the_example_are_its_run_s(example_results):
     """The contract's example results show the file's form with numbers of their own (link 3 at 48.5°, a balancing
-    moment of 412 N·m); the extensions page gives the example scene's own, which a student running it finds."""
+    moment of 412 N·m); the extensions page gives the example scene's own, which a student running it finds, its
+    kinematics checked here against the four-bar worked from its lengths."""
     extensions = (ROOT / "docs" / "scene-format-extensions.md").read_text(encoding="utf-8")
     row = next(line for line in extensions.splitlines() if line.startswith("| the contract's example results |"))
     values, _, hand = row.partition("; its `[measured.5]`")
@@ -85,6 +112,8 @@ def test_the_values_the_extensions_give_for_the_example_are_its_run_s(example_re
     for key, value in given.items():
         digits = len(str(value).split(".")[1])
         assert run[key] == pytest.approx(value, abs=0.51 * 10.0 ** -digits), key
+        if key in (exact := _example_kinematics(math.radians(position["driver"]["angle_deg"]))):
+            assert exact[key] == pytest.approx(value, abs=0.51 * 10.0 ** -digits), key
     # The hand reading: pb (mm) at the plan's μV over lBC, and its δ against the analytic ω4.
     reading = re.search(r"pb = ([\d.]+) mm reads `omega4` ([\d.]+) rad/s \(\1 mm · ([\d.]+) \(m/s\)/mm / lBC "
                         r"([\d.]+) m\), δ (−[\d.]+) %", hand)
