@@ -1168,16 +1168,11 @@ def balancing_panel(layers: Sequence[Layer], locale: str, sheet: str | None = No
     if larger is None or sheet is None or sheet == "none" or not holds(sheet, form, width(usual), height(usual)):
         return usual
     # Fields a step of the standard scales apart draw a polygon at one scale: each drawing once.
-    sizes = {(round(width(usual), 3), round(height(usual), 3))}
-    ways = []
+    ways = {(round(width(usual), 3), round(height(usual), 3)): usual}
     for drawn in larger():
         way = replace(usual, layers=_title_as_heading(drawn))
-        size = (round(width(way), 3), round(height(way), 3))
-        if size not in sizes and holds(sheet, form, *size):
-            sizes.add(size)
-            ways.append(way)
-    ways.sort(key=lambda way: -width(way) * height(way))
-    return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
+        ways.setdefault((round(width(way), 3), round(height(way), 3)), way)
+    return _larger_first(usual, [way for way in ways.values() if way is not usual], sheet, form)
 
 
 def _balancing_drawn(layers: Sequence[Layer], locale: str, sheet: str | None = None) -> Panel:
@@ -1360,8 +1355,13 @@ def dynamics_panel(layers: Sequence[Layer], locale: str, redrawn: Redrawings | N
         return max(held, key=lambda way: width(way) * height(way)) if held else usual
     if not filled:
         return usual
-    ways = [replace(usual, layers=tuple(drawn)) for drawn in redrawn.larger()]
-    ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
+    return _larger_first(usual, [replace(usual, layers=tuple(drawn)) for drawn in redrawn.larger()], sheet, form)
+
+
+def _larger_first(usual: Panel, larger: Sequence[Panel], sheet: str, form: str) -> Panel:
+    """``usual`` with the ways of ``larger`` that an empty ``sheet`` holds as its own, largest first, itself last:
+    for the packing to take the largest the room left holds."""
+    ways = sorted((way for way in larger if holds(sheet, form, width(way), height(way))),
                   key=lambda way: -width(way) * height(way))
     return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
 
