@@ -11,7 +11,9 @@ a sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
 format, but never on a sheet before one with a drawing of its kind (the
 plans of position 11 never come before those of position 5), nor on its
-sheet as high as one of its kind unless all to the right of it.  A plan sheet
+sheet as high as one of its kind unless all to the right of it, and under a
+heading of its own beside another position's drawing of its kind only with
+their tops level.  A plan sheet
 of one position stands as a row (mechanism, velocity plan, acceleration
 plan) wherever that fits, else with its mechanism above its plans or
 beside them, so that it may join a sheet with room of another shape, and
@@ -339,6 +341,7 @@ class Page:
         rects = [rect for _, rect, _ in self.placed]
         kind = _kind(panel)
         same_kind = [rect for placed, rect, _ in self.placed if _kind(placed) == kind]
+        level_with = _headed_rivals(panel, self.placed)
         gaps = [_gap_between(panel, placed) for placed, _, _ in self.placed]
         # Against the area's edges, beside or under another drawing, level with one, or just above the block.
         xs = {self.area[0], self.area[2] - width, *(r[2] + gap for r, gap in zip(rects, gaps, strict=True)),
@@ -376,6 +379,8 @@ class Page:
                     continue
                 if panel.in_rows and not all(rect[3] <= earlier[1] + 1e-6 for earlier in same_kind):
                     continue
+                if not all(_level_or_apart(rect, other) for other in level_with):
+                    continue
                 if allowed is not None and not allowed(rect):
                     continue
                 union = rect if common is None else (min(common[0], rect[0]), min(common[1], rect[1]),
@@ -407,6 +412,32 @@ def _gap_between(panel: Panel, other: Panel) -> float:
     if _kind(panel) == _kind(other) == "plan" and panel.parts and other.parts:
         return BETWEEN_POSITIONS_MM
     return GAP_MM
+
+
+def _headed_rivals(panel: Panel, placed: Sequence[tuple[Panel, Rect, tuple[float, float]]]) -> list[Rect]:
+    """Where the drawings placed stand that ``panel`` may stand beside only with their tops level: other wholes of
+    its kind, each under a heading of its own, as ``panel`` is.
+
+    Beside one another at different heights, a heading stood level with the
+    other's drawings, and a reader scanning the band under it met those
+    first: on the V-twin's Russian A1, "положение 8" stood level with
+    position 2's plans.  Not held so: a drawing's own parts; a part that goes
+    on from another, whose heading says "continued" (held so, the double
+    rocker's force sheets took a Russian A1 more); a drawing with no heading,
+    which a reader pairs by its captions.
+    """
+    def headed_whole(drawing: Panel) -> bool:
+        return not drawing.continues and has_heading(drawing.layers)
+
+    if not headed_whole(panel):
+        return []
+    return [rect for other, rect, _ in placed if _kind(other) == _kind(panel)
+            and _whole_of(other) != _whole_of(panel) and headed_whole(other)]
+
+
+def _level_or_apart(rect: Rect, other: Rect) -> bool:
+    """Whether a drawing at ``rect`` keeps its top level with one at ``other``, or stands clear of its height."""
+    return abs(rect[3] - other[3]) <= 1e-6 or rect[1] >= other[3] - 1e-6 or rect[3] <= other[1] + 1e-6
 
 
 def _reads_after(rect: Rect, earlier: Rect) -> bool:
