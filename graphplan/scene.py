@@ -1053,10 +1053,13 @@ def _read_load(where: str, item: object) -> LoadSpec:
         raise SceneError(table.where("value"), "a resisting load's value is its magnitude (resisting = true turns it "
                          f"against the motion): write {-value:g}", value)
     if resisting and diagram is not None and any(v < 0 for _, v in diagram):
+        # A moment has no angle to give (one is refused: it acts on its whole link); its sign is its sense.
+        signed = "its values counter-clockwise positive" if kind == "moment" else \
+            "and the load's angle, its values signed along it"
         raise SceneError(table.where("diagram"), "a resisting load's diagram gives magnitudes (resisting = true turns "
                          "it against the motion), and a negative value's sign would be dropped: for a load that "
-                         "helps the motion over part of the stroke, give resisting = false and the load's angle, its "
-                         "values signed along it", [v for _, v in diagram])
+                         f"helps the motion over part of the stroke, give resisting = false {signed}",
+                         [v for _, v in diagram])
     stroke_table = table.table("stroke", None)
     stroke = _read_working(stroke_table) if stroke_table is not None else None
     if stroke is not None and during == "always":

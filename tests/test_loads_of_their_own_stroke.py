@@ -17,6 +17,7 @@ from scene_texts import central_slider_crank, second_cylinder
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.starters import starter
 
 RADIUS, ROD, OMEGA = 0.075, 0.3, 20.0 * math.pi
 DIAGRAM = [[0.0, 0.0], [0.2, 400.0], [0.4, 1000.0], [0.6, 2200.0], [0.75, 5300.0], [1.0, 5300.0]]
@@ -109,6 +110,24 @@ def test_a_negative_value_in_a_resisting_diagram_is_refused_not_dropped():
     text = twin(0.0, 90.0, "").replace("[[0.0, 0.0], [0.2, 400.0]", "[[0.0, -800.0], [0.2, 400.0]", 1)
     with pytest.raises(graphplan.SceneError, match=r"^loads\[0\]\.diagram: a resisting load's diagram gives magnitudes"):
         graphplan.load_text(text)
+
+
+def test_a_moment_s_diagram_with_a_negative_value_is_told_what_runs_with_no_angle_to_give():
+    """A moment has no angle (one is refused: it acts on its whole link), so the advice gives its sense by its sign;
+    it told a moment to give its angle, and the scene that did was refused at ``loads[0].angle``."""
+    usual = 'value     = 1500.0        # N·m\nresisting = true          # against the rocker\'s motion\n' \
+            'during    = "working"'
+    text = starter("crank-rocker")
+    assert usual in text
+    diagram = "diagram = [[0.0, 10.0], [0.5, -100.0], [1.0, 0.0]]"
+    with pytest.raises(graphplan.SceneError) as refused:
+        graphplan.load_text(text.replace(usual, f"resisting = true\n{diagram}"))
+    message = str(refused.value)
+    assert message.startswith("loads[0].diagram: a resisting load's diagram gives magnitudes"), message
+    assert "resisting = false" in message and "counter-clockwise positive" in message and "angle" not in message
+    # As advised: the load helps the rocker over the share where its value is negative.
+    scene = graphplan.load_text(text.replace(usual, f"resisting = false\n{diagram}"))
+    assert [value for _, value in scene.loads[0].diagram] == [10.0, -100.0, 0.0]
 
 
 def test_a_gas_force_over_the_whole_cycle_acts_at_both_dead_centres_as_the_stroke_beginning_there_gives_it():
