@@ -237,11 +237,13 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every), motion=motion, numbers=positions.numbers)
-    # A load judged against masses typed in grams would be told a slip of its own it is not.
+    # A load judged against masses typed in grams, or against inertia loads of a speed typed in rev/min (some
+    # hundred times too large), would be told a slip of its own it is not.
     mass_slips = masses_in_grams(mechanism, motion) + inertia_too_large(mechanism, motion)
-    in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism) + angles_in_radians(mechanism)
+    rpm_slip = speed_in_rpm(mechanism)
+    in_order = tuple(sorted(lengths_in_millimetres(motion) + rpm_slip + angles_in_radians(mechanism)
                             + mass_slips + centres_as_shares(mechanism, motion)
-                            + (() if mass_slips else loads_in_kilonewtons(mechanism, motion))
+                            + (() if mass_slips or rpm_slip else loads_in_kilonewtons(mechanism, motion))
                             + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)

@@ -82,6 +82,18 @@ def test_masses_in_grams_are_told_instead():
            ["masses-in-grams"]
 
 
+def test_a_speed_typed_in_rpm_is_told_instead():
+    """The ratchet's crank at 1450 typed for its 17 rad/s: the rocker's inertia moment J·ε, some seven thousand times
+    too large, dwarfed its true 1500 N·m, which was told as typed in kN·m, to be multiplied by 1000."""
+    text = _edited(RATCHET, "omega   = -17.0 ", "omega   = -1450.0 ")
+    warnings = loads(text).analyse().warnings
+    assert [warning.code for warning in warnings if warning.code in ("speed-in-rpm", "load-in-kn")] == \
+           ["speed-in-rpm"]
+    # At its speed in rad/s the same moment typed in kN·m is told still.
+    assert _told(_edited(text.replace("omega   = -1450.0 ", "omega   = -17.0 "), "value     = 1500.0",
+                         "value     = 1.5"))
+
+
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
 def test_the_note_says_so_under_its_initial_data(locale):
     scene = loads(_edited(ENGINE, GAS_FORCE, "value     = 4.5"))
