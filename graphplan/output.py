@@ -56,6 +56,8 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
         raise OutputError(f"{target}: holds {', '.join(shown)}, {whose}; move {them} away, or give {option} another "
                           "folder")
     carried: list[str] = []
+    # The folders on the way that the run makes, nearest first: a run that fails takes them away again.
+    made = [above for above in folder.parents if not _there(above)]
     try:
         folder.parent.mkdir(parents=True, exist_ok=True)
         shutil.rmtree(staging, ignore_errors=True)
@@ -80,11 +82,14 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
         staging.rename(folder)
     except BaseException as error:
         # Ctrl-C too: the user's own files carried into the staging folder must go back before it is removed.
-        if retired.exists() and not folder.exists():
+        if _there(retired) and not _there(folder):
             retired.rename(folder)
         for name in carried:
             (staging / name).rename(folder / name)
         shutil.rmtree(staging, ignore_errors=True)
+        for above in made:
+            with contextlib.suppress(OSError):  # one that holds something now is not the run's alone
+                above.rmdir()
         if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot write the output ({error.strerror or error})") from None
@@ -129,11 +134,38 @@ def check_folder(target: Path, option: str = "--out") -> Path:
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
                           f"give {option} a folder of its own")
     try:
-        return _folder_to_replace(target, resolved, option)
+        folder = _folder_to_replace(target, resolved, option)
+        _refuse_a_name_too_long_to_stage(target, folder, option)
+        return folder
     except OutputError:
         raise
     except OSError as error:  # a name too long for the disk, a folder that may not be looked into
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+
+
+def _there(path: Path) -> bool:
+    """Whether ``path`` is there; False for a name the disk could not hold (Path.exists raises for it)."""
+    try:
+        return path.exists()
+    except OSError:
+        return False
+
+
+def _refuse_a_name_too_long_to_stage(target: Path, path: Path, option: str, what: str = "folder") -> None:
+    """A folder (or file) whose name the disk holds, but not the hidden sibling a run writes it as first
+    (``.NAME.partial-PID``): the run failed on it once everything was drawn, with a traceback."""
+    above = _nearest_there(path)
+    try:
+        most = os.pathconf(above if above is not None else Path.cwd(), "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):  # not asked on Windows, nor of a disk that will not say
+        return
+    staged = f".{path.name}.partial-{os.getpid()}"
+    length = len(os.fsencode(staged))
+    if length > most:
+        room = most - (length - len(os.fsencode(path.name)))
+        raise OutputError(f"{target}: its name is too long for the run to write the {what} by: the run writes it "
+                          f"first as {staged[:12]}….partial-{os.getpid()} beside it, {length} bytes where the disk "
+                          f"holds names of up to {most}; give {option} a {what} whose name is at most {room} bytes")
 
 
 def _through_a_loop(path: Path) -> bool:
@@ -237,6 +269,7 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
     """
     target = Path(target)
     staging = target.parent / f".{target.name}.partial-{os.getpid()}"
+    made: list[Path] = []  # the folders on the way that this makes, nearest first, taken away again on a failure
     try:
         # A link counts even where it leads nowhere (to itself, or to a file gone): it would be replaced by the file.
         if not replace and (target.exists() or target.is_symlink()):
@@ -246,12 +279,17 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
         above = _nearest_there(target)
         if above is not None and not above.is_dir():
             raise OutputError(f"{target}: {above} is not a folder, so the file cannot go in it")
+        _refuse_a_name_too_long_to_stage(target, target, "--out", "file")
+        made.extend(above for above in target.parents if not _there(above))
         target.parent.mkdir(parents=True, exist_ok=True)
         staging.write_text(content, encoding="utf-8", newline="\n")
         staging.replace(target)
     except BaseException as error:
         with contextlib.suppress(OSError):  # a name too long for the disk cannot have been written either
             staging.unlink(missing_ok=True)
+        for above in made:
+            with contextlib.suppress(OSError):
+                above.rmdir()
         if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
