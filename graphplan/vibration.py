@@ -64,6 +64,10 @@ LARGE_MAGNIFICATION = 10.0
 MOST_MOUNT_SAG = 0.1
 Support = Literal["simply_supported", "cantilever"]
 SUPPORTS = ("simply_supported", "cantilever")
+# The speeds (rpm) a machine's rotor is taken to turn at: from a slow mixer's to past a turbocharger's (some 300 000)
+# and a dental turbine's.  A speed of 10¹³ rpm (omega = 1e12) gave an exciting force of 10²² N without a word.
+SLOWEST_RPM = 1.0
+FASTEST_RPM = 1_000_000.0
 
 
 def _array(argument: str, value: ArrayLike, *, least: float | None = None, strict: bool = False) -> np.ndarray:
@@ -907,6 +911,8 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
                          hint="; a slip of the exponent?")
     given = table.has("omega") or table.has("rpm")
     omega = table.speed(positive=True) if driver_speed is None else table.speed(driver_speed, positive=True)
+    if given:
+        _refuse_speed(table, omega, unbalance)
     zeta = _damping(table, stiffness, mass)
     wanted = table.number("transmissibility", None, positive=True)
     base = table.number("base_amplitude", None, positive=True)
@@ -930,6 +936,22 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
                          transmissibility=wanted, base_amplitude=base, shaft=shaft,
                          damping=table.number("damping") if table.has("damping") else None, eccentricity=eccentricity,
                          driver_speed=not given)
+
+
+def _refuse_speed(table: Table, omega: float, unbalance: float) -> None:
+    """Raise :class:`SceneError` at the table's ``omega`` or ``rpm`` for a speed (``omega`` rad/s, as read) outside
+    :data:`SLOWEST_RPM`–:data:`FASTEST_RPM`, told in the unit it was typed in."""
+    key = "omega" if table.has("omega") else "rpm"
+    rpm = omega / RPM
+    if SLOWEST_RPM <= rpm <= FASTEST_RPM:
+        return
+    fastest = f"{FASTEST_RPM:,.0f}".replace(",", " ")
+    bounds = (f"{SLOWEST_RPM:g}–{fastest} rpm" if key == "rpm" else
+              f"{SLOWEST_RPM * RPM:.4g}–{FASTEST_RPM * RPM:.6g} rad/s ({SLOWEST_RPM:g}–{fastest} rpm)")
+    force = f": the exciting force m·e·ω² would be {unbalance * omega * omega:.3g} N" if unbalance else ""
+    slip = "; a slip of the exponent?" if not SLOWEST_RPM / 1000 <= rpm <= FASTEST_RPM * 1000 else ""
+    raise SceneError(table.where(key), f"must be within {bounds}, as a machine's rotor turns (a fan's some 1000 "
+                     f"rpm, a turbocharger's up to some 300 000){force}", table.data[key], hint=slip)
 
 
 def _one_of(table: Table, first: str, second: str, purpose: str) -> str:

@@ -403,6 +403,31 @@ def test_a_bad_table_names_the_key(data, message):
 _MACHINE = {"mass": 100.0, "unbalance": 0.02, "stiffness": 1e5, "rpm": 600.0}
 
 
+@pytest.mark.parametrize(("speed", "bounds", "slip"), [
+    ({"omega": 1e12}, r"0\.1047–104720 rad/s \(1–1 000 000 rpm\)", True),
+    ({"omega": 1e-12}, r"0\.1047–104720 rad/s \(1–1 000 000 rpm\)", True),
+    ({"rpm": 1e7}, "1–1 000 000 rpm", False),
+    ({"rpm": 0.5}, "1–1 000 000 rpm", False),
+])
+def test_a_speed_no_machine_s_rotor_turns_at_is_refused_with_the_force_it_would_give(speed, bounds, slip):
+    """omega = 1e12 ran, without a word, to an exciting force of 10²² N and mounts of 10²⁵ N/m."""
+    data = {key: value for key, value in _MACHINE.items() if key != "rpm"} | speed
+    (key, value), = speed.items()
+    omega = value if key == "omega" else value * math.pi / 30.0
+    with pytest.raises(SceneError) as refused:
+        read(data)
+    message = str(refused.value)
+    assert re.match(rf"^vibration\.{key}: must be within {bounds}, as a machine's rotor turns", message), message
+    force = float(re.search(r"the exciting force m·e·ω² would be (\S+) N", message)[1])
+    assert force == pytest.approx(0.02 * omega ** 2, rel=5e-3)
+    assert message.endswith("a slip of the exponent?") is slip
+
+
+@pytest.mark.parametrize("rpm", [1.0, 1e6])
+def test_the_slowest_and_the_fastest_rotor_s_speeds_are_taken(rpm):
+    assert read(_MACHINE | {"rpm": rpm}).omega == pytest.approx(rpm * math.pi / 30.0)
+
+
 @pytest.mark.parametrize(("replaced", "given", "message"), [
     # "stiffness: is required (or shaft)" of a table that gave it, under the textbook's k.
     ("stiffness", {"k": 1e5}, r"^vibration.k: unknown key; .* stiffness: write stiffness = 100000.0$"),
