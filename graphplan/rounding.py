@@ -33,7 +33,8 @@ def written_as_nought(unit: str, worked_out: str = "") -> str:
     it were not there.  ``unit`` is the value's; ``worked_out`` the quantity worked out of the key's values that is
     that small, where the key's own value is not (``its m·r = 1e-06·1e-05 = 1e-11 kg·m``), said first."""
     lead = f"{worked_out}, which " if worked_out else ""
-    return f"{lead}must be above {ROUNDING_NOISE:g} {unit}, the size the note and the drawings write as 0"
+    unit = f" {unit}" if unit else ""  # a ratio's has none
+    return f"{lead}must be above {ROUNDING_NOISE:g}{unit}, the size the note and the drawings write as 0"
 
 
 def largest_finite(values: Any) -> float:

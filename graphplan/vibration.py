@@ -1026,9 +1026,15 @@ def _shaft(table: Table) -> Shaft | None:
 def _damping(table: Table, stiffness: float, mass: float) -> float:
     if table.has("damping_ratio") and table.has("damping"):
         raise SceneError(table.where("damping"), "give either damping_ratio or damping (c), not both")
-    if table.has("damping"):
-        return float(damping_ratio(table.number("damping", non_negative=True), stiffness, mass))
-    return table.number("damping_ratio", 0.0, non_negative=True)
+    key = "damping" if table.has("damping") else "damping_ratio"
+    zeta = float(damping_ratio(table.number("damping", non_negative=True), stiffness, mass)) if key == "damping" \
+        else table.number("damping_ratio", 0.0, non_negative=True)
+    # ζ = 1e-12 was warned of near resonance as "little damping (ζ = 0)": the note writes it 0, as none.
+    if 0 < zeta <= ROUNDING_NOISE:
+        worked = f"it gives ζ = c/(2·√(k·M)) = {zeta:.3g}" if key == "damping" else ""
+        raise SceneError(table.where(key), f"{written_as_nought('', worked)}, or 0 for none (the "
+                         "damping ratio ζ is a share of the critical damping)", table.data[key])
+    return zeta
 
 
 __all__ = [

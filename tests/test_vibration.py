@@ -613,6 +613,20 @@ def test_a_damping_too_small_to_matter_near_resonance_is_warned_of_as_none_is(tm
     assert code == 0 and "warning" not in told.out
 
 
+@pytest.mark.parametrize(("given", "zeta"), [({"damping_ratio": 1e-12}, None), ({"damping": 1e-9}, 1e-9 / (2.0 * math.sqrt(1e5 * 100.0)))])
+def test_a_damping_the_note_would_write_as_none_is_refused(given, zeta):
+    """ζ = 1e-12 near resonance was warned of as "little damping (ζ = 0)"; the note, too, wrote it 0."""
+    (key, value), = given.items()
+    with pytest.raises(SceneError) as refused:
+        read({"mass": 100.0, "unbalance": 0.02, "stiffness": 1e5, "omega": 30.0} | given)
+    message = str(refused.value)
+    worked = f"it gives ζ = c/(2·√(k·M)) = {zeta:.3g}, which " if zeta else ""
+    assert message == (f"vibration.{key}: {worked}must be above 1e-10, the size the note and the drawings write as "
+                       "0, or 0 for none (the damping ratio ζ is a share of the critical damping) "
+                       f"(got {value!r})"), message
+    assert read({"mass": 100.0, "unbalance": 0.02, "stiffness": 1e5, "omega": 30.0, key: 0.0}).damping_ratio == 0
+
+
 def test_an_undamped_speed_a_rounding_off_resonance_is_refused_as_resonance(tmp_path, capsys):
     # The teacher's ω = 31.6227766017 for √(1e5/100) = 31.62277660168…: X = 1.95e8 m was written without a word.
     natural = math.sqrt(1e5 / 100.0)
