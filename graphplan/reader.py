@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import datetime
 import difflib
+import functools
 import json
 import math
 import re
@@ -111,8 +112,9 @@ def radians_within_a_turn(degrees: float) -> float:
     return math.radians(math.fmod(degrees, 360.0))
 
 
-def check_number(value: Any, where: str) -> float:
-    """``value`` as a finite float of a magnitude graphplan computes with, or a SceneError naming ``where``."""
+def check_number(value: Any, where: str, positive: bool = False) -> float:
+    """``value`` as a finite float of a magnitude graphplan computes with, or a SceneError naming ``where``; where
+    it must be ``positive``, 0 is not offered."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise SceneError(where, f"must be a number, not {_type_name(value)}", value, hint=_number_in_text(value))
     try:
@@ -122,7 +124,9 @@ def check_number(value: Any, where: str) -> float:
     if not math.isfinite(number):
         raise SceneError(where, "must be a finite number", value)
     if number != 0 and not SMALLEST <= abs(number) <= LARGEST:
-        raise SceneError(where, f"must be 0 or of a magnitude from {SMALLEST:g} to {LARGEST:g}", value)
+        # "must be 0 or …" of a key that refuses 0 ("must be > 0") offered what it then refused.
+        sign = "> 0, " if positive else "0 or "
+        raise SceneError(where, f"must be {sign}of a magnitude from {SMALLEST:g} to {LARGEST:g}", value)
     return number
 
 
@@ -443,7 +447,7 @@ class Table:
 
     def number(self, key: str, default: Any = _REQUIRED, *, positive: bool = False,
                non_negative: bool = False) -> Any:
-        value = self.take(key, default, check_number)
+        value = self.take(key, default, functools.partial(check_number, positive=positive))
         if key in self.data:
             if positive and not value > 0:
                 raise SceneError(self.where(key), "must be > 0", self.data[key])

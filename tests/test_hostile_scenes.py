@@ -335,7 +335,14 @@ def test_an_integer_too_large_for_a_float(capsys):
 def test_a_vanishing_length(capsys):
     """A crank of 1e-300 m would underflow its square in the force analysis: refused where it is given."""
     error = assert_refused(capsys, _with("driver.length", 1e-300), "driver.length")
-    assert "must be 0 or of a magnitude from 1e-15 to 1e+15" in error
+    # Not "must be 0 or …": a length must be > 0, and 0 is refused as such.
+    assert "driver.length: must be > 0, of a magnitude from 1e-15 to 1e+15 (got 1e-300)" in error
+    assert_refused(capsys, _with("driver.length", 0.0), "driver.length")
+
+
+def test_a_vanishing_value_of_a_key_that_may_be_0_is_offered_0(capsys):
+    error = assert_refused(capsys, _with("frame.points.O[0]", 1e-300), "frame.points.O[0]")
+    assert "frame.points.O[0]: must be 0 or of a magnitude from 1e-15 to 1e+15 (got 1e-300)" in error
 
 
 @pytest.mark.parametrize("path,value", [("drawing.length_scale", 1e-300), ("drawing.velocity_pole", 1e300),
