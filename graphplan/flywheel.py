@@ -947,7 +947,8 @@ def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
         return None
     from .render.numerals import number
 
-    unset = " (the default where it is left out)" if found.gear_ratio == 1.0 else ""
+    left_out = found.gear_ratio == 1.0 and not getattr(spec.motion, "gear_ratio_given", False)
+    unset = " (the default where it is left out)" if left_out else ""
     runs = (f"the crank turns at (not the {spec.where}.{spec.speed_key} typed in the other unit, told above)"
             if found.against_crank else "the machine runs at")
     # The motor's speed and the machine's as the note writes them (1455.5 rpm, not 1456); the shaft's speed in rpm

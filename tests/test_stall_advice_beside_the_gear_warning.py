@@ -64,6 +64,13 @@ def test_a_stall_through_a_gear_ratio_too_large_is_not_advised_a_larger_one(tmp_
     assert "not a larger gear ratio: through the one given, u = 40, the motor already turns" in paragraph
 
 
+def test_a_gear_ratio_of_1_typed_is_not_called_the_default(tmp_path, capsys):
+    """gear_ratio = 1.0 written in the scene was told "(the default where it is left out)", as though not there."""
+    told, _ = _run(tmp_path, capsys, _kloss(4000.0, ", gear_ratio = 1.0"))
+    line = _gear_line(told, "1: the motor's rated speed")
+    assert "default" not in line
+
+
 def test_a_gear_ratio_left_out_is_asked_for_once_with_its_number(tmp_path, capsys):
     told, note = _run(tmp_path, capsys, _kloss(4000.0, ""))
     _gear_line(told, "1 (the default where it is left out)")

@@ -111,6 +111,9 @@ class MotionSpec:
     # The key the machine's own inertia is given at (a machine known by its load diagrams: "inertia"), or None where
     # the links' masses give it, for a clutch that runs the machine up in no time to name.
     inertia_key: str | None = None
+    # Whether the scene wrote the motor's gear_ratio: a warning of a ratio of 1 says it is the default only where
+    # it was left out ("gear_ratio = 1.0" typed was told "(the default where it is left out)").
+    gear_ratio_given: bool = False
 
     def _key(self, name: str) -> str:
         """The key path of ``name`` (``"brake.damping"``) as the scene wrote it."""
@@ -585,4 +588,5 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
                       method=method, rtol=rtol, steady_tolerance=steady_tolerance, where=table.path,
                       start_keys=start_keys,
                       kloss_keys=tuple(key for key in ("synchronous_rpm", "rated_rpm", "rated_slip")
-                                       if motor_table.has(key)))
+                                       if motor_table.has(key)),
+                      gear_ratio_given=motor_table.has("gear_ratio"))
