@@ -246,7 +246,9 @@ ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw",
            # The moment of inertia about the centre of mass as the textbooks write it (J_S, I_S).
            "js": "inertia", "j_s": "inertia", "is": "inertia", "i_s": "inertia", "i": "inertia",
            # An induction motor by the names a catalogue and a Russian textbook give it: its characteristic is Kloss'.
-           "induction": "kloss", "asynchronous": "kloss", "async": "kloss", "асинхронный": "kloss", "клосс": "kloss"}
+           "induction": "kloss", "asynchronous": "kloss", "async": "kloss", "асинхронный": "kloss", "клосс": "kloss",
+           # A load's kind by its other names: "torque" was told "did you mean 'force'?" by its letters.
+           "torque": "moment", "couple": "moment", "момент": "moment", "сила": "force", "力矩": "moment", "力": "force"}
 
 
 def suggestion(word: str, choices: Any) -> str:

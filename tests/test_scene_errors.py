@@ -1841,3 +1841,17 @@ def test_a_librarys_error_in_the_dynamics_is_told_as_the_step_it_stopped_and_the
     with pytest.raises(SceneError) as caught, _scene_values("dynamics"):
         equivalent_model_of(None, 1)
     assert str(caught.value) == "dynamics: count must be an integer >= 2, not 1"
+
+
+@pytest.mark.parametrize(("written", "meant"), [("torque", "moment"), ("couple", "moment"), ("момент", "moment"),
+                                                ("сила", "force"), ("forse", "force")])
+def test_a_load_s_kind_by_another_name_is_told_the_kind_it_names(written, meant):
+    """"torque" was told "did you mean 'force'?", by its letters; a torque is a moment."""
+    from graphplan.starters import starter
+
+    text = starter("crank-rocker")
+    assert text.count('kind      = "moment"') == 1
+    with pytest.raises(graphplan.SceneError) as refused:
+        graphplan.load_text(text.replace('kind      = "moment"', f'kind = "{written}"'))
+    assert str(refused.value) == (f"loads[0].kind: must be one of moment, force; did you mean '{meant}'? "
+                                  f"(got '{written}')")
