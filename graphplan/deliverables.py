@@ -126,19 +126,29 @@ def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None =
 
     A piece asked for that the scene cannot give is a :class:`SceneError`.
     """
-    asked: list[str] | None = None
-    if only is not None:
-        # Checked as the scene's [output] include is, with the piece a misspelling was meant to be.
-        asked = [check_choice(piece, f"{where}[{k}]", PIECES) for k, piece in enumerate(only)]
-    elif scene.include is not None:
-        asked, where = list(scene.include), "output.include"
-    if asked is None:
+    if only is None and scene.include is None:
         return tuple(piece for piece in PIECES if _by_default(scene, piece) and missing(scene, analysis, piece) is None)
+    if scene.include is not None:
+        # Refused under --only too, as check refuses it: the scene is wrong whichever pieces this run writes.  Under
+        # --only its sheets are not judged by the --sheet this run gives (none, for pieces drawn without them).
+        _refuse_missing(scene, analysis, list(scene.include), "output.include", sheet_key,
+                        not_judged=() if only is None else ("sheets",))
+    if only is None:
+        return tuple(piece for piece in PIECES if piece in scene.include)
+    # Checked as the scene's [output] include is, with the piece a misspelling was meant to be.
+    asked = [check_choice(piece, f"{where}[{k}]", PIECES) for k, piece in enumerate(only)]
+    _refuse_missing(scene, analysis, asked, where, sheet_key)
+    return tuple(piece for piece in PIECES if piece in asked)
+
+
+def _refuse_missing(scene: Scene, analysis: Analysis | None, asked: list[str], where: str, sheet_key: str,
+                    not_judged: tuple[str, ...] = ()) -> None:
+    """A :class:`SceneError` at ``where[k]`` for the first of ``asked`` (but those ``not_judged``) that the scene
+    cannot give."""
     for k, piece in enumerate(asked):
-        reason = missing(scene, analysis, piece, sheet_key)
+        reason = None if piece in not_judged else missing(scene, analysis, piece, sheet_key)
         if reason is not None:
             raise SceneError(f"{where}[{k}]", f"{piece!r} {reason}")
-    return tuple(piece for piece in PIECES if piece in asked)
 
 
 def refuse_as_run_would(scene: Scene, analysis: Analysis | None,

@@ -239,6 +239,21 @@ def test_check_refuses_an_include_the_scene_cannot_give_before_it_says_ok(tmp_pa
     assert "output.include[0]: 'balancing' needs a [balancing] table" in printed.err
 
 
+def test_run_refuses_under_only_the_include_check_refuses(tmp_path, capsys):
+    """run --only positions wrote its output from a scene check refused, the include's fault unsaid."""
+    scene = tmp_path / "scene.toml"
+    text = Path(FIXTURE).read_text(encoding="utf-8")
+    scene.write_text(text + '\n[output]\ninclude = ["positions", "balancing"]\n', encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--only", "positions", "--out", str(out)]) == 2
+    assert "output.include[1]: 'balancing' needs a [balancing] table" in capsys.readouterr().err
+    assert not out.exists()
+    # An include of sheets is the scene's sheet's to judge, not a --sheet none given for pieces without them.
+    scene.write_text(text + '\n[output]\ninclude = ["positions", "sheets"]\n', encoding="utf-8")
+    assert main(["run", str(scene), "--only", "positions", "--sheet", "none", "--out", str(out)]) == 0
+    assert (out / "positions.svg").is_file() and not list(out.glob("sheet_*.svg"))
+
+
 @pytest.mark.parametrize("pole, key", [
     (1000.0, "drawing.sheet"),                # the acceleration plans bigger than an A1 sheet: the sheets refuse them
     (100000.0, "drawing.acceleration_pole"),  # 150 m across: every run refuses them, sheets or none
