@@ -317,6 +317,23 @@ def test_a_bad_table_names_the_key(data, message):
         read(data)
 
 
+def test_two_planes_listed_right_first_are_refused_unless_named():
+    """planes = [0.22, 0.04] ran with the plane lettered L at z = 0.22, to the right of R at 0.04."""
+    masses = [{"mass": 1, "radius": 0.1, "angle": 0, "plane": 0.1}, {"mass": 2, "radius": 0.1, "angle": 90,
+                                                                    "plane": 0.15}]
+    with pytest.raises(SceneError) as refused:
+        read({"masses": masses, "planes": [0.22, 0.04]})
+    assert str(refused.value) == ("balancing.planes: lists the left plane L first, then the right R, along z: write "
+                                  "[0.04, 0.22], or name the planes as you list them (plane_names) (got [0.22, 0.04])")
+    # As advised, or named in the order listed: the same correction in each plane, at its own z.
+    named = balance(read({"masses": masses, "planes": [0.22, 0.04], "plane_names": ["A", "B"]}))
+    advised = balance(read({"masses": masses, "planes": [0.04, 0.22]}))
+    assert [(plane.name, plane.position) for plane in named.planes] == [("A", 0.22), ("B", 0.04)]
+    assert [(plane.name, plane.position) for plane in advised.planes] == [("L", 0.04), ("R", 0.22)]
+    assert named.planes[0].correction == pytest.approx(advised.planes[1].correction, abs=1e-15)
+    assert named.planes[1].correction == pytest.approx(advised.planes[0].correction, abs=1e-15)
+
+
 @pytest.mark.parametrize(("entry", "message"), [
     # "radius: is required but missing" of a mass whose radius was there, under the textbook's r.
     ({"mass": 1, "r": 0.1, "angle": 0}, r"^balancing.masses\[0\].r: unknown key; .* radius: write radius = 0.1$"),
