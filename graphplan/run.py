@@ -120,6 +120,11 @@ def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterab
     if only is not None:
         # A piece mistyped is told at once, as a format is, not once the mechanism is analysed; what the scene has
         # data for is known only then.
+        if "results" in only:
+            # Asked for by users who want the numbers alone: it is no piece, and was refused as a misspelt one.
+            raise SceneError(f"{options.only}[{only.index('results')}]", "results.json is written by every run, "
+                             "beside the pieces named: name those, or positions alone for the least beside it",
+                             "results")
         only = check_choices(only, options.only, PIECES, "piece")
     # A folder the run could never write is told at once, not once the analysis and the drawings are done.
     check_folder(folder, options.out)

@@ -472,3 +472,18 @@ def test_a_format_none_of_the_pieces_comes_in_is_said_not_dropped(tmp_path, caps
     assert told == [(f"warning: --format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
                      f"{only})")]
     assert not list(out.glob(f"*.{kind}")) and list(out.glob("*.png"))
+
+
+def test_only_results_is_told_that_every_run_writes_them(tmp_path, capsys):
+    """--only results, for the numbers alone, was refused as a misspelt piece among fifteen."""
+    out = tmp_path / "out"
+    assert main(["run", FIXTURE, "--only", "positions,results", "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert error.startswith("graphplan: error: --only[1]: results.json is written by every run, beside the pieces "
+                            "named: name those, or positions alone for the least beside it")
+    assert not out.exists()
+    # As told: positions alone writes results.json, the analysis of every position in it.
+    assert main(["run", FIXTURE, "--only", "positions", "--out", str(out)]) == 0
+    written = sorted(path.name for path in out.iterdir() if not path.name.startswith("."))
+    assert written == ["positions.svg", "results.json"]
+    assert json.loads((out / "results.json").read_text(encoding="utf-8"))["positions"]
