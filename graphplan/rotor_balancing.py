@@ -607,7 +607,7 @@ def _planes(table: Table) -> tuple[float, ...]:
         raise SceneError(table.where("planes"), "the two correction planes must be apart", list(planes))
     if len(planes) == 2 and planes[0] > planes[1] and not table.has("plane_names"):
         # Taken as given, the plane lettered L stood to the right of R, the polygons and the note naming them so.
-        raise SceneError(table.where("planes"), f"lists the left plane L first, then the right R, along z: write "
+        raise SceneError(table.where("planes"), f"must list the left plane L first, then the right R, along z: write "
                          f"[{planes[1]!r}, {planes[0]!r}], or name the planes as you list them (plane_names)",
                          list(planes))
     return planes

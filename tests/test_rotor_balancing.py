@@ -323,7 +323,7 @@ def test_two_planes_listed_right_first_are_refused_unless_named():
                                                                     "plane": 0.15}]
     with pytest.raises(SceneError) as refused:
         read({"masses": masses, "planes": [0.22, 0.04]})
-    assert str(refused.value) == ("balancing.planes: lists the left plane L first, then the right R, along z: write "
+    assert str(refused.value) == ("balancing.planes: must list the left plane L first, then the right R, along z: write "
                                   "[0.04, 0.22], or name the planes as you list them (plane_names) (got [0.22, 0.04])")
     # As advised, or named in the order listed: the same correction in each plane, at its own z.
     named = balance(read({"masses": masses, "planes": [0.22, 0.04], "plane_names": ["A", "B"]}))
