@@ -68,6 +68,10 @@ SUPPORTS = ("simply_supported", "cantilever")
 # and a dental turbine's.  A speed of 10¹³ rpm (omega = 1e12) gave an exciting force of 10²² N without a word.
 SLOWEST_RPM = 1.0
 FASTEST_RPM = 1_000_000.0
+# The moduli of elasticity (Pa) shafts are made of: from a polymer's some 3·10⁹ to a hard metal's 7·10¹¹ (diamond's
+# 1.2·10¹²).  Steel's 2.1e5, typed in MPa (N/mm²), made a 50 mm shaft k = 3 N/m, sagging 317 m, without a word.
+SOFTEST_SHAFT = 1e9
+STIFFEST_SHAFT = 1.2e12
 
 
 def _array(argument: str, value: ArrayLike, *, least: float | None = None, strict: bool = False) -> np.ndarray:
@@ -1001,6 +1005,12 @@ def _shaft(table: Table) -> Shaft | None:
     for key, symbols, what in _SHAFT_SYMBOLS:
         shaft.named_otherwise(key, symbols, what)
     modulus = shaft.number("modulus", positive=True)
+    if not SOFTEST_SHAFT <= modulus <= STIFFEST_SHAFT:
+        meant = next((f"; {unit} typed for Pa? {modulus:g} {unit} is modulus = {modulus * factor:g}"
+                      for factor, unit in ((1e6, "MPa"), (1e9, "GPa")) if SOFTEST_SHAFT <= modulus * factor
+                      <= STIFFEST_SHAFT), "")
+        raise SceneError(shaft.where("modulus"), f"must be within {SOFTEST_SHAFT:g}–{STIFFEST_SHAFT:g} Pa, as shafts "
+                         "are made (steel's 2.1e11, a polymer's some 3e9): E is in Pa", modulus, hint=meant)
     if shaft.has("second_moment") and shaft.has("diameter"):
         raise SceneError(shaft.where("diameter"), "give either second_moment or diameter, not both")
     if not shaft.has("diameter") and not shaft.has("second_moment"):

@@ -245,7 +245,7 @@ def test_an_unbalance_that_would_put_the_whole_machine_beyond_any_rotor_is_warne
 
 @pytest.mark.parametrize(("typed", "given", "key", "unit"), [
     ("mass          = 100.0 ", "mass          = 1e-14 ", "vibration.mass", "kg"),
-    ("stiffness     = 1.0e5 ", "shaft = { modulus = 1e-14, diameter = 0.03, length = 0.8 } ", "vibration.shaft",
+    ("stiffness     = 1.0e5 ", "shaft = { modulus = 2.1e11, diameter = 1e-6, length = 0.8 } ", "vibration.shaft",
      "N/m"),
     ("stiffness     = 1.0e5 ", "stiffness     = 1e-12 ", "vibration.stiffness", "N/m"),
 ], ids=["mass", "shaft", "stiffness"])
@@ -253,7 +253,7 @@ def test_a_mass_or_stiffness_the_note_writes_as_nought_is_refused_at_its_key(tmp
                                                                              key, unit) -> None:
     """The note writes a quantity below 1e-10 as 0, as no machine's is so small: a machine of 1e-14 kg on its mounts
     ended the run in ZeroDivisionError as the note worked out ωn = √(k/M) with M written 0, and a shaft of modulus
-    1e-14 Pa, k = 48·E·I/L³ some 1e-20 N/m, in ValueError ("stiffness: must be > 0"), after `check` had passed both.
+    1e-14 Pa (now refused at its modulus; here a shaft of 1 µm), k = 48·E·I/L³ some 1e-20 N/m, in ValueError ("stiffness: must be > 0"), after `check` had passed both.
     Each is refused at its key by run and check alike, and nothing is written."""
     text = _starter(tmp_path, "rotor")
     assert text.count(typed) == 1

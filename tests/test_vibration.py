@@ -423,6 +423,21 @@ def test_a_speed_no_machine_s_rotor_turns_at_is_refused_with_the_force_it_would_
     assert message.endswith("a slip of the exponent?") is slip
 
 
+@pytest.mark.parametrize(("modulus", "hint"), [(2.1e5, "; MPa typed for Pa? 210000 MPa is modulus = 2.1e+11"),
+                                               (210.0, "; GPa typed for Pa? 210 GPa is modulus = 2.1e+11"),
+                                               (5e12, "")])
+def test_a_shaft_modulus_no_shaft_is_made_of_is_refused_with_the_unit_it_was_typed_in(modulus, hint):
+    """Steel's 2.1e5 typed in MPa made a 50 mm shaft k = 3 N/m, its critical speed 1.7 rpm, without a word."""
+    data = {key: value for key, value in _MACHINE.items() if key != "stiffness"}
+    with pytest.raises(SceneError) as refused:
+        read(data | {"shaft": {"modulus": modulus, "diameter": 0.05, "length": 1.0}})
+    assert str(refused.value) == ("vibration.shaft.modulus: must be within 1e+09–1.2e+12 Pa, as shafts are made "
+                                  f"(steel's 2.1e11, a polymer's some 3e9): E is in Pa (got {modulus!r}){hint}")
+    # A nylon shaft's 3e9 and a hard metal's 6.5e11 are taken.
+    for taken in (3e9, 6.5e11):
+        assert read(data | {"shaft": {"modulus": taken, "diameter": 0.05, "length": 1.0}}).shaft.modulus == taken
+
+
 @pytest.mark.parametrize("rpm", [1.0, 1e6])
 def test_the_slowest_and_the_fastest_rotor_s_speeds_are_taken(rpm):
     assert read(_MACHINE | {"rpm": rpm}).omega == pytest.approx(rpm * math.pi / 30.0)
