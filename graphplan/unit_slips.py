@@ -272,6 +272,14 @@ def loads_in_kilonewtons(mechanism: Mechanism, motion: Motion) -> tuple[Position
         # A thousand times a load that stays under the bound is no load in kN either.
         guess = (f"k{unit} typed for {unit}? {spec.value:g} k{unit} is {meant}"
                  if abs(spec.value) * 1000 >= KILO_SLIP * largest else "no unit explains it: a mistaken value?")
+        weight = max((value for name, value, _ in own if name.startswith("its weight")), default=0.0)
+        if abs(spec.value) * 1000 < KILO_SLIP * largest and abs(spec.value) >= KILO_SLIP * weight:
+            # Only the inertia dwarfs it, a thousand times over, and that grows as the driver's speed squared: a
+            # crank's epsilon = 1e9 was told only that the rocker's 1500 N·m was "a mistaken value".
+            driver = scene.driver
+            speed, rate = ("omega", "epsilon") if driver.kind == "crank" else ("velocity", "acceleration")
+            guess += (f"; or {driver.where}.{speed} or {driver.where}.{rate} given too large, which the inertia "
+                      "grows with?")
         carried = ", ".join(f"{name} {written(value, 3)} {unit}{why}" for name, value, why in own)
         told.append(f"{key} {typed} is {written(100.0 * abs(spec.value) / largest, 2)} % of the largest load link "
                     f"{spec.link} carries of itself ({carried}): {guess}")

@@ -94,6 +94,15 @@ def test_a_speed_typed_in_rpm_is_told_instead():
                          "value     = 1.5"))
 
 
+def test_a_load_only_an_absurd_motion_dwarfs_is_told_the_motion_may_be_the_slip():
+    """The ratchet's crank given epsilon = 1e9 rad/s²: the rocker's J·ε dwarfed its true 1500 N·m, which was told
+    only as "a mistaken value?".  Its weight's moment alone does not dwarf it, so the motion is asked of too."""
+    (detail,) = _told(_edited(RATCHET, "epsilon = 0.0", "epsilon = 1e9"))
+    assert detail.startswith("loads[0].value = 1500 N·m is ")
+    assert detail.endswith("no unit explains it: a mistaken value?; or driver.omega or driver.epsilon given too "
+                           "large, which the inertia grows with?: the scene's forces are in N, its moments in N·m")
+
+
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
 def test_the_note_says_so_under_its_initial_data(locale):
     scene = loads(_edited(ENGINE, GAS_FORCE, "value     = 4.5"))
