@@ -44,7 +44,15 @@ from .kinematics import read_only
 from .reader import Table, check_xy
 from .rounding import RELATIVE_NOISE
 from .table_keys import keys_of_other_tables
-from .units import MOST_MOTOR_SLIP, RPM, motor_speed_in_rpm, nearest_synchronous_rpm, percentage_question, rpm_question
+from .units import (
+    MOST_MOTOR_SLIP,
+    RPM,
+    exponent_slip,
+    motor_speed_in_rpm,
+    nearest_synchronous_rpm,
+    percentage_question,
+    rpm_question,
+)
 
 # A cycle whose work is left over by more than this share of the work done is not steady: the floor under the
 # integration's own error (EquivalentModel.work_uncertainty), below which a mismatch is not told from it.
@@ -611,7 +619,7 @@ def _refuse_mean_speed_at(where: str, typed: float, in_rpm: bool, omega: float, 
               f"{SLOWEST_MEAN_RPM * RPM:.4g}–{FASTEST_MEAN_RPM * RPM:.5g} rad/s ({SLOWEST_MEAN_RPM:g}–"
               f"{FASTEST_MEAN_RPM:g} rpm)")
     nearest = SLOWEST_MEAN_RPM if rpm < SLOWEST_MEAN_RPM else FASTEST_MEAN_RPM
-    slip = "; a slip of the exponent?" if not SLOWEST_MEAN_RPM / 1000 <= rpm <= FASTEST_MEAN_RPM * 1000 else ""
+    slip = exponent_slip(rpm, SLOWEST_MEAN_RPM, FASTEST_MEAN_RPM)
     why = (f"the flywheel for delta is ΔWmax/(ωm²·δ), {(nearest / rpm) ** 2:.3g} times the one at {nearest:g} rpm "
            "here" if sized else "the equation of motion runs the motor through its gear about it")
     raise SceneError(where, f"must be within {bounds}, as a shaft a flywheel evens out turns (a press's "

@@ -49,6 +49,12 @@ def percentage_question(value: float, symbol: str) -> str:
     return strings("en")["percentage_question"].format(value=f"{value:g}", symbol=symbol, fraction=f"{value / 100:g}")
 
 
+def exponent_slip(value: float, smallest: float, largest: float) -> str:
+    """The hint of a value a thousand times or more beyond its bounds, which is no machine's but a slip of the
+    exponent (1e12 for 12); "" for one nearer, which may be another unit and is told so where it is checked."""
+    return "; a slip of the exponent?" if value < smallest / 1000 or value > largest * 1000 else ""
+
+
 def millimetres_question(*, some: bool = False, second_moment: bool = False) -> str:
     """The question a warning about lengths in millimetres ends with, and the fix: every length divided by 1000
     (and a second moment of area, mm⁴, by 10¹²), or, where only ``some`` are in millimetres among metres, those

@@ -50,7 +50,7 @@ from .rotor_lengths import (
 )
 from .rounding import ROUNDING_NOISE, digit_unit, written_as_nought
 from .table_keys import keys_of_other_tables
-from .units import RPM, STANDARD_GRAVITY, motor_speed_in_rpm, percentage_question, rpm_question
+from .units import RPM, STANDARD_GRAVITY, exponent_slip, motor_speed_in_rpm, percentage_question, rpm_question
 
 Scalar = float | np.ndarray
 #: Without damping, a speed this close to ωn (relative) is resonance: its amplitude is rounding's, not the machine's.
@@ -953,9 +953,9 @@ def _refuse_speed(table: Table, omega: float, unbalance: float) -> None:
     bounds = (f"{SLOWEST_RPM:g}–{fastest} rpm" if key == "rpm" else
               f"{SLOWEST_RPM * RPM:.4g}–{FASTEST_RPM * RPM:.6g} rad/s ({SLOWEST_RPM:g}–{fastest} rpm)")
     force = f": the exciting force m·e·ω² would be {unbalance * omega * omega:.3g} N" if unbalance else ""
-    slip = "; a slip of the exponent?" if not SLOWEST_RPM / 1000 <= rpm <= FASTEST_RPM * 1000 else ""
     raise SceneError(table.where(key), f"must be within {bounds}, as a machine's rotor turns (a fan's some 1000 "
-                     f"rpm, a turbocharger's up to some 300 000){force}", table.data[key], hint=slip)
+                     f"rpm, a turbocharger's up to some 300 000){force}", table.data[key],
+                     hint=exponent_slip(rpm, SLOWEST_RPM, FASTEST_RPM))
 
 
 def _one_of(table: Table, first: str, second: str, purpose: str) -> str:

@@ -13,7 +13,7 @@ import numpy as np
 from ..errors import SceneError
 from ..flywheel import FASTEST_MEAN_RPM, misplaced_keys
 from ..reader import Table, check_number
-from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
+from ..units import RPM, exponent_slip, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .method import (
     EndlessRun,
@@ -167,7 +167,7 @@ class MotionSpec:
                              f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
                              f"{MOST_TURNS} turns, and runs down once the motor is off: give an off_at of at most "
                              f"{TWO_PI * MOST_TURNS / omega_run:.3g} s", off_at,
-                             hint=_exponent_slip(off_at * omega_run / TWO_PI, 0.0, MOST_TURNS))
+                             hint=exponent_slip(off_at * omega_run / TWO_PI, 0.0, MOST_TURNS))
         if self.duration is None and off_at is None:
             self._refuse_after_the_longest_run(MOST_CYCLES * TWO_PI / omega_run)
         # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
@@ -223,7 +223,7 @@ class MotionSpec:
                 raise SceneError(self._key(key), f"is past {longest:.4g} s, the {MOST_CYCLES} turns' time at the "
                                  f"running speed that a run with no duration ends by, so the {thing} never {never}: "
                                  f"give a {self._key('duration')} past it, or an earlier {key.partition('.')[2]}",
-                                 at, hint=_exponent_slip(at, 0.0, longest))
+                                 at, hint=exponent_slip(at, 0.0, longest))
 
     def _refuse_weightless_clutched_side(self, machine: Machine, omega_run: float) -> None:
         """Raise :class:`SceneError` for a machine behind a clutch whose torque runs it up to ``omega_run`` in less
@@ -281,14 +281,14 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
                          "2–1000, 14.4 from a motor's 1440 rpm to a press's 100; a step-up gear's down to some "
                          "0.01): the shaft turns at the motor's speed over it, and the rotor's inertia comes to it "
                          "times its square", gear_ratio,
-                         hint=_exponent_slip(gear_ratio, SMALLEST_GEAR_RATIO, LARGEST_GEAR_RATIO))
+                         hint=exponent_slip(gear_ratio, SMALLEST_GEAR_RATIO, LARGEST_GEAR_RATIO))
     rotor_inertia = table.number("rotor_inertia", 0.0, non_negative=True)
     if not rotor_inertia <= LARGEST_ROTOR_INERTIA:
         raise SceneError(table.where("rotor_inertia"), f"must be at most {LARGEST_ROTOR_INERTIA:g} kg·m², as motors' "
                          "rotors are built (a 4 kW induction motor's some 0.02, a megawatt one's some tens, a "
                          "pumped-storage motor-generator's some 1e7): it comes to the driving shaft times the gear "
                          "ratio's square", rotor_inertia,
-                         hint=_exponent_slip(rotor_inertia, 0.0, LARGEST_ROTOR_INERTIA))
+                         hint=exponent_slip(rotor_inertia, 0.0, LARGEST_ROTOR_INERTIA))
     drive = {"gear_ratio": gear_ratio, "rotor_inertia": rotor_inertia}
     off_at = table.number("off_at", None, non_negative=True)
     if kind == "constant":
@@ -335,7 +335,7 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
             raise SceneError(table.where("power"), f"must be within {SMALLEST_MOTOR_POWER:g} W–"
                              f"{LARGEST_MOTOR_POWER / 1e6:g} MW, as induction motors are built (a fan's some watts, a "
                              "rolling mill's some tens of megawatts): Kloss' torques are in proportion to it", power,
-                             hint=kilowatts or _exponent_slip(power, SMALLEST_MOTOR_POWER, LARGEST_MOTOR_POWER))
+                             hint=kilowatts or exponent_slip(power, SMALLEST_MOTOR_POWER, LARGEST_MOTOR_POWER))
         overload = table.number("overload")
         if not overload > 1:
             raise SceneError(table.where("overload"), "must be > 1 (it is Mmax/Mrated)", overload)
@@ -379,12 +379,6 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
     return motor, off_at
 
 
-def _exponent_slip(value: float, smallest: float, largest: float) -> str:
-    """The hint of a value a thousand times or more beyond its bounds, which is no machine's but a slip of the
-    exponent (1e12 for 12); "" for one nearer, which may be another unit and is told so where it is checked."""
-    return "; a slip of the exponent?" if value < smallest / 1000 or value > largest * 1000 else ""
-
-
 def _refuse_motor_speed(where: str, rpm: float, typed: object = None, derived: str = "") -> None:
     """Raise :class:`SceneError` at ``where`` for a motor's speed (rev/min) outside the speeds motors turn at: the
     value typed there, or one ``typed`` there gives, as ``derived`` says."""
@@ -394,7 +388,7 @@ def _refuse_motor_speed(where: str, rpm: float, typed: object = None, derived: s
     raise SceneError(where, (f"gives a speed outside {bounds}" if derived else f"must be within {bounds}") +
                      ", as motors turn (a low-speed hydraulic one some tens, a 50 Hz induction one up to 3000, a "
                      f"high-speed spindle some 100 000){derived}", rpm if typed is None else typed,
-                     hint=_exponent_slip(rpm, SLOWEST_MOTOR_RPM, FASTEST_MOTOR_RPM))
+                     hint=exponent_slip(rpm, SLOWEST_MOTOR_RPM, FASTEST_MOTOR_RPM))
 
 
 def _refuse_motor_torque(where: str, torque: float, typed: object = None, derived: str = "") -> None:
@@ -416,7 +410,7 @@ def _refuse_motor_torque(where: str, torque: float, typed: object = None, derive
                      ", as motors drive machines (a watch's stepper some micronewton-metres, a 4 kW induction motor "
                      f"some 26 N·m, a grinding mill's ring motor some 10 MN·m){derived}",
                      torque if typed is None else typed,
-                     hint=newton_millimetres or _exponent_slip(torque, SMALLEST_MOTOR_TORQUE, LARGEST_MOTOR_TORQUE))
+                     hint=newton_millimetres or exponent_slip(torque, SMALLEST_MOTOR_TORQUE, LARGEST_MOTOR_TORQUE))
 
 
 def _refuse_point(where: str, rpm: float, torque: float, typed: object) -> None:
@@ -517,7 +511,7 @@ def _refuse_start_speed(table: Table, omega_key: str, rpm_key: str, omega: float
     bounds = f"{FASTEST_MEAN_RPM:g} rpm" if in_rpm else f"{FASTEST_MEAN_RPM * RPM:.5g} rad/s ({FASTEST_MEAN_RPM:g} rpm)"
     raise SceneError(table.where(key), f"must be at most {bounds}, as the driving shaft of a machine turns (a press's "
                      "some 10–100 rpm, an engine's up to some 10 000): the run starts the shaft at this speed",
-                     table.data[key], hint=_exponent_slip(omega / RPM, 0.0, FASTEST_MEAN_RPM))
+                     table.data[key], hint=exponent_slip(omega / RPM, 0.0, FASTEST_MEAN_RPM))
 
 
 def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics") -> MotionSpec:
