@@ -33,7 +33,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
     """
     target = Path(target)
     folder = check_folder(target, option)
-    staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
+    staging = _staging(folder)
     retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
     users, changed = _not_written_by_a_run(folder, option) if folder.is_dir() else ([], [])
@@ -56,8 +56,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
         raise OutputError(f"{target}: holds {', '.join(shown)}, {whose}; move {them} away, or give {option} another "
                           "folder")
     carried: list[str] = []
-    # The folders on the way that the run makes, nearest first: a run that fails takes them away again.
-    made = [above for above in folder.parents if not _there(above)]
+    made = _to_make(folder)
     try:
         folder.parent.mkdir(parents=True, exist_ok=True)
         shutil.rmtree(staging, ignore_errors=True)
@@ -87,9 +86,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
         for name in carried:
             (staging / name).rename(folder / name)
         shutil.rmtree(staging, ignore_errors=True)
-        for above in made:
-            with contextlib.suppress(OSError):  # one that holds something now is not the run's alone
-                above.rmdir()
+        _take_away(made)
         if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot write the output ({error.strerror or error})") from None
@@ -143,6 +140,24 @@ def check_folder(target: Path, option: str = "--out") -> Path:
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
 
 
+def _staging(path: Path) -> Path:
+    """The hidden sibling a folder or file is written as first, which then takes its name."""
+    return path.parent / f".{path.name}.partial-{os.getpid()}"
+
+
+def _to_make(path: Path) -> list[Path]:
+    """The folders on the way to ``path`` that are not there, nearest first: those a write makes, and takes away
+    again where it fails (:func:`_take_away`)."""
+    return [above for above in path.parents if not _there(above)]
+
+
+def _take_away(made: list[Path]) -> None:
+    """Remove the folders a failed write ``made``, nearest first, each only where it is empty."""
+    for above in made:
+        with contextlib.suppress(OSError):  # one that holds something now is not the write's alone
+            above.rmdir()
+
+
 def _there(path: Path) -> bool:
     """Whether ``path`` is there; False for a name the disk could not hold (Path.exists raises for it)."""
     try:
@@ -159,7 +174,7 @@ def _refuse_a_name_too_long_to_stage(target: Path, path: Path, option: str, what
         most = os.pathconf(above if above is not None else Path.cwd(), "PC_NAME_MAX")
     except (OSError, ValueError, AttributeError):  # not asked on Windows, nor of a disk that will not say
         return
-    staged = f".{path.name}.partial-{os.getpid()}"
+    staged = _staging(path).name
     length = len(os.fsencode(staged))
     if length > most:
         room = most - (length - len(os.fsencode(path.name)))
@@ -268,8 +283,8 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
     and stays as it was.
     """
     target = Path(target)
-    staging = target.parent / f".{target.name}.partial-{os.getpid()}"
-    made: list[Path] = []  # the folders on the way that this makes, nearest first, taken away again on a failure
+    staging = _staging(target)
+    made: list[Path] = []
     try:
         # A link counts even where it leads nowhere (to itself, or to a file gone): it would be replaced by the file.
         if not replace and (target.exists() or target.is_symlink()):
@@ -280,16 +295,14 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
         if above is not None and not above.is_dir():
             raise OutputError(f"{target}: {above} is not a folder, so the file cannot go in it")
         _refuse_a_name_too_long_to_stage(target, target, "--out", "file")
-        made.extend(above for above in target.parents if not _there(above))
+        made = _to_make(target)
         target.parent.mkdir(parents=True, exist_ok=True)
         staging.write_text(content, encoding="utf-8", newline="\n")
         staging.replace(target)
     except BaseException as error:
         with contextlib.suppress(OSError):  # a name too long for the disk cannot have been written either
             staging.unlink(missing_ok=True)
-        for above in made:
-            with contextlib.suppress(OSError):
-                above.rmdir()
+        _take_away(made)
         if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
