@@ -121,17 +121,23 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     def crosses_pole(shift: complex) -> bool:  # the lever's moments are about the pole, at 0
         return (at * unit.conjugate()).imag * ((at + shift) * unit.conjugate()).imag < 0
 
+    @functools.cache
+    def ink() -> tuple[BaseGeometry, ...]:
+        """The lever's lines and the arrows drawn so far, each shaft grown to a band: measured once, asked of every
+        way tried."""
+        shafts = (LineString((item.start, item.end)).buffer(0.8) for item in arrows
+                  if isinstance(item, Arrow) and item.length > 0)
+        return (lines(), *shafts)
+
     def tied(shift: complex) -> bool:
         """Whether the leader from the point to an arrow ``shift`` beside it lies along no line and no other arrow,
         drawn or still to be drawn from the point along its load's line (``senses``): one along the lever's line
         e–s5 or along Mu5′'s shaft is not seen, and the arrow reads as a load at another point (the Russian shaper's
         G6 and F6 at e)."""
-        tie = LineString((_xy(at), _xy(at + shift)))
-        shafts = [LineString((item.start, item.end)) for item in arrows if isinstance(item, Arrow) and item.length > 0]
         if any(abs((shift * sense.conjugate()).imag) < math.sin(math.radians(10.0)) * abs(shift) for sense in senses):
             return False
-        return all(tie.intersection(line).length < abs(shift) / 2 for line in (lines(), *(shaft.buffer(0.8)
-                                                                                          for shaft in shafts)))
+        tie = LineString((_xy(at), _xy(at + shift)))
+        return all(tie.intersection(line).length < abs(shift) / 2 for line in ink())
 
     away, onto = (at, at + vector), (at - vector, at)
     # A side is taken where it is clear at BESIDE_MM, and drawn there LEVER_BESIDE_MM off where that is clear too: a
