@@ -61,6 +61,7 @@ from .unit_slips import (
     loads_in_kilonewtons,
     masses_in_grams,
     speed_in_rpm,
+    velocity_in_millimetres,
 )
 from .wording import balancing_symbol
 
@@ -237,10 +238,10 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every), motion=motion, numbers=positions.numbers)
-    # A load judged against masses typed in grams, or against inertia loads of a speed typed in rev/min (some
-    # hundred times too large), would be told a slip of its own it is not.
+    # A load judged against masses typed in grams, or against inertia loads of a speed typed in rev/min or mm/s (some
+    # hundred or a million times too large), would be told a slip of its own it is not.
     mass_slips = masses_in_grams(mechanism, motion) + inertia_too_large(mechanism, motion)
-    rpm_slip = speed_in_rpm(mechanism)
+    rpm_slip = speed_in_rpm(mechanism) + velocity_in_millimetres(mechanism)
     in_order = tuple(sorted(lengths_in_millimetres(motion) + rpm_slip + angles_in_radians(mechanism)
                             + mass_slips + centres_as_shares(mechanism, motion)
                             + (() if mass_slips or rpm_slip else loads_in_kilonewtons(mechanism, motion))
@@ -289,7 +290,8 @@ SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-th
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
                                  "inertia-too-large", "centre-as-share", "resisting-turns-round",
                                  "along-moving-point", "working-stroke-quicker", "block-near-pivot",
-                                 "joints-coincide", "blocks-pass-through", "angle-in-radians", "load-in-kn"})
+                                 "joints-coincide", "blocks-pass-through", "angle-in-radians", "load-in-kn",
+                                 "velocity-in-mm"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

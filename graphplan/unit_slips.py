@@ -126,6 +126,48 @@ def speed_in_rpm(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
                                                             f"{driver.where}.rpm")),)
 
 
+# A slider driver's velocity is in m/s: a hydraulic cylinder's rod moves at some 0.05–0.5 m/s, a pneumatic one's at
+# up to 1.5–3, the fastest linear drives (an impact cylinder, a linear motor) at some 10 m/s.  The same speeds typed
+# in mm/s are 50 and more, and the inertia loads they give grow as its square, a million times over.  A driver faster
+# than FASTEST_SLIDER_DRIVE_M_S is told.
+FASTEST_SLIDER_DRIVE_M_S = 20.0
+
+
+def velocity_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
+    """A ``velocity-in-mm`` warning, at the first position, where a slider driver's ``velocity`` is faster than any
+    cylinder or linear drive pushes (:data:`FASTEST_SLIDER_DRIVE_M_S`): mm/s typed for m/s, with its ``acceleration``
+    (where not 0) likely in mm/s² with it."""
+    driver = mechanism.driver
+    if not _slider_too_fast(mechanism):
+        return ()
+    told = (f"{driver.where}.velocity = {driver.velocity:g} m/s drives the slider {driver.joint} faster than any "
+            f"cylinder or linear drive pushes (over {FASTEST_SLIDER_DRIVE_M_S:g} m/s; a hydraulic cylinder's rod "
+            f"moves at some 0.05–0.5 m/s): mm/s typed for m/s? {driver.velocity:g} mm/s is {driver.where}.velocity = "
+            f"{driver.velocity / 1000:g}")
+    if driver.acceleration:
+        told += (f", and {driver.acceleration:g} mm/s² is {driver.where}.acceleration = "
+                 f"{driver.acceleration / 1000:g}")
+    return (PositionWarning(0, "velocity-in-mm", told + ": the scene's velocities are in m/s, its accelerations in "
+                                                        "m/s²"),)
+
+
+def velocity_slip_hint(mechanism: Mechanism) -> str | None:
+    """The fix a refusal of a plan larger than any paper adds where the slider driver's velocity reads as mm/s
+    (:func:`velocity_in_millimetres`): its accelerations then a thousand times the driver's own and its plan as
+    many times the pole, whose key alone the refusal would send the student to.  None where it does not."""
+    if not _slider_too_fast(mechanism):
+        return None
+    driver = mechanism.driver
+    also = f" and {driver.where}.acceleration = {driver.acceleration / 1000:g}" if driver.acceleration else ""
+    return (f"{driver.where}.velocity = {driver.velocity:g} m/s is mm/s typed for m/s: give {driver.where}.velocity = "
+            f"{driver.velocity / 1000:g}{also}")
+
+
+def _slider_too_fast(mechanism: Mechanism) -> bool:
+    driver = mechanism.driver
+    return driver.kind == "slider" and abs(driver.velocity) > FASTEST_SLIDER_DRIVE_M_S
+
+
 def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
     """A ``masses-in-grams`` warning, at the first position, naming each link whose mass is more than
     :func:`heaviest_bar` of its span (the largest distance between two of its points), with the mass it would be in

@@ -164,6 +164,51 @@ def test_a_flywheel_shafts_and_a_machines_rpm_typed_as_omega_are_warned_of(tmp_p
     assert f"warning: vibration: {_rpm_words('vibration.omega', 2880.0)}: write vibration.rpm = 2880" in told
 
 
+SLIDER_DRIVEN = Path("fixtures/slider_driven.toml").read_text(encoding="utf-8")
+
+
+def _slider_driven(velocity: str, acceleration: str = "0.0") -> str:
+    text = SLIDER_DRIVEN.replace("velocity     = 0.08 ", f"velocity     = {velocity} ", 1)
+    text = text.replace("acceleration = 0.0 ", f"acceleration = {acceleration} ", 1)
+    assert f"velocity     = {velocity} " in text and f"acceleration = {acceleration} " in text
+    return text
+
+
+def test_a_slider_drivers_velocity_in_mm_per_s_is_warned_of_and_not_as_a_load_in_kn(tmp_path, capsys):
+    """The hydraulic lever's 0.08 m/s typed as 80 gives accelerations a million times its own and so inertia loads
+    that dwarf its 150 N·m: it was told only that the load looked typed in kN·m."""
+    told, results, note = _run(tmp_path, _slider_driven("80.0"), capsys)
+    words = ("driver.velocity = 80 m/s drives the slider A faster than any cylinder or linear drive pushes (over "
+             "20 m/s; a hydraulic cylinder's rod moves at some 0.05–0.5 m/s): mm/s typed for m/s? 80 mm/s is "
+             "driver.velocity = 0.08: the scene's velocities are in m/s")
+    assert f"warning: {words}" in told
+    codes = {warning["code"] for warning in results["warnings"]}
+    assert any(warning["code"] == "velocity-in-mm" and words in warning["detail"] for warning in results["warnings"])
+    assert "load-in-kn" not in codes and "kN" not in told
+    assert "it was probably given in mm/s where m/s are asked for" in note
+
+
+def test_a_slider_drivers_acceleration_in_mm_per_s2_too_is_named_where_its_plan_is_refused(tmp_path, capsys):
+    """Its 0.5 m/s² typed as 500 with it, the plan drawn at the fixture's acceleration_pole is a thousand times too
+    large: refused at the pole alone, the student was sent to a scale that fits once the speeds are in m/s."""
+    assert main(["run", str(_scene(tmp_path, _slider_driven("80.0", "500.0"))), "--out", str(tmp_path / "out"),
+                 "--only", "note"]) == 2
+    told = capsys.readouterr()
+    assert ("mm/s typed for m/s? 80 mm/s is driver.velocity = 0.08, and 500 mm/s² is driver.acceleration = 0.5"
+            in told.err)
+    assert "graphplan: error: drawing.acceleration_pole: draws the acceleration plan" in told.err
+    assert told.err.strip().endswith("; or driver.velocity = 80 m/s is mm/s typed for m/s: give driver.velocity = "
+                                     "0.08 and driver.acceleration = 0.5")
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("velocity", ["15.0", "-0.5"])
+def test_a_slider_driver_as_fast_as_a_drive_pushes_is_not_warned_of(tmp_path, capsys, velocity):
+    told, results, _ = _run(tmp_path, _slider_driven(velocity), capsys)
+    assert "mm/s typed for m/s" not in told
+    assert "velocity-in-mm" not in {warning["code"] for warning in results["warnings"]}
+
+
 def test_a_links_mass_in_grams_is_warned_of(tmp_path, capsys):
     # The rocker BC is 0.325 m long: a solid steel bar of it, 0.325 m square, is 7850·0.325³ = 269 kg.
     text = _edited("crank-rocker", 'mass    = 17.0\ncentre  = "S4"', 'mass    = 300.0\ncentre  = "S4"')
@@ -202,7 +247,7 @@ def test_a_rotors_radius_in_millimetres_among_planes_in_metres_is_warned_of(tmp_
     assert f"mass 1's radius, 5 m, is {5.0 / 0.22:.3g} times the 0.22 m" in note
 
 
-_SLIPS = ("rev/min typed for rad/s", "grams typed for kg", "as millimetres,", " in radians: ")
+_SLIPS = ("rev/min typed for rad/s", "grams typed for kg", "as millimetres,", " in radians: ", "mm/s typed for m/s")
 
 
 @pytest.mark.parametrize("scene", [*SCENES, *STARTERS], ids=str)

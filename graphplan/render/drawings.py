@@ -20,6 +20,7 @@ from ..positions import working_speed
 from ..scales import LARGEST_PAPER_MM, fit_scale, format_scale, next_standard_scale, standard_scale
 from ..scene import Working
 from ..statics import efficiency, rounded_zero
+from ..unit_slips import velocity_slip_hint
 from ..wording import raised
 from . import force_lever, plans, positions, velocity_plans
 from . import forces as force_layout
@@ -115,11 +116,11 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
                                f"across{at_key}", across)
         # A crank a thousand times shorter than its links draws pa, which the pole distance fixes, as a dot beside
         # the rest of the plan: the length is the key to change, which nothing else names.
-        units = mixed_units(analysis.mechanism)
+        slips = [slip for slip in (mixed_units(analysis.mechanism), velocity_slip_hint(analysis.mechanism)) if slip]
         raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
                          f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {field:g} mm "
                          "plan), or leave it out for the program to choose", given,
-                         hint=f"; or {units}" if units is not None else "")
+                         hint="".join(f"; or {slip}" for slip in slips))
     polygons = _drawn_polygons(analysis)
     for position, group in polygons:
         across = polygon_extent(group.polygon) / group.scale
