@@ -57,6 +57,7 @@ from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_ro
 from .unit_slips import (
     angles_in_radians,
     centres_as_shares,
+    free_lengths_in_millimetres,
     inertia_too_large,
     loads_in_kilonewtons,
     masses_in_grams,
@@ -244,6 +245,7 @@ def analyse(scene: Scene) -> Analysis:
     rpm_slip = speed_in_rpm(mechanism) + velocity_in_millimetres(mechanism)
     in_order = tuple(sorted(lengths_in_millimetres(motion) + rpm_slip + angles_in_radians(mechanism)
                             + mass_slips + centres_as_shares(mechanism, motion)
+                            + free_lengths_in_millimetres(mechanism, motion)
                             + (() if mass_slips or rpm_slip else loads_in_kilonewtons(mechanism, motion))
                             + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
@@ -291,7 +293,7 @@ SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-th
                                  "inertia-too-large", "centre-as-share", "resisting-turns-round",
                                  "along-moving-point", "working-stroke-quicker", "block-near-pivot",
                                  "joints-coincide", "blocks-pass-through", "angle-in-radians", "load-in-kn",
-                                 "velocity-in-mm"})
+                                 "velocity-in-mm", "free-length-in-mm"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

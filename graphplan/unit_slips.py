@@ -330,6 +330,39 @@ def loads_in_kilonewtons(mechanism: Mechanism, motion: Motion) -> tuple[Position
     return (PositionWarning(0, "load-in-kn", "; ".join(told) + ": the scene's forces are in N, its moments in N·m"),)
 
 
+# A coil spring squeezes no shorter than its solid length, some 30–50 % of its free length; an extension spring is
+# stretched from about its free length.  A spring shorter than SOLID_SHARE of its free length at every position is
+# none that can be built, as a free length typed in millimetres makes it: the 0.43–0.6 m spring of a 0.5 m free
+# length typed 500 pushes as if squeezed by 499.5 m, and its k·(L − L0) dwarfs every other load.
+SOLID_SHARE = 0.2
+
+
+def free_lengths_in_millimetres(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
+    """A ``free-length-in-mm`` warning, at the first position, naming each spring shorter at every position than
+    :data:`SOLID_SHARE` of its ``free_length``, with the free length it would be in millimetres where that one
+    leaves the spring longer than its solid length somewhere."""
+    told = []
+    for spec in mechanism.scene.loads:
+        if not spec.spring:
+            continue
+        reach = np.asarray(motion.point(spec.point).r, dtype=float) - np.asarray(motion.point(spec.along).r, dtype=float)
+        lengths = np.hypot(*reach.T)
+        longest = _largest(lengths)
+        if longest is None or not longest < SOLID_SHARE * spec.free_length:
+            continue
+        shortest = float(np.nanmin(lengths))
+        meant = spec.free_length / 1000
+        guess = (f"mm typed for m? {spec.free_length:g} mm is {spec.where}.free_length = {meant:g}"
+                 if SOLID_SHARE * meant <= longest else "no unit explains it: a mistaken value?")
+        told.append(f"{spec.where}.free_length = {spec.free_length:g} m is {written(spec.free_length / longest, 3)} "
+                    f"times the longest the spring from {spec.along} to {spec.point} gets ({written(shortest, 3)}–"
+                    f"{written(longest, 3)} m over the positions), squeezed far past any spring's solid length (a "
+                    f"coil spring's is 30–50 % of its free length): {guess}")
+    if not told:
+        return ()
+    return (PositionWarning(0, "free-length-in-mm", "; ".join(told) + ": the scene's lengths are in metres"),)
+
+
 def _own_loads(motion: Motion, force: bool, number: int, link, gravity: float) -> list[tuple[str, float, str]]:
     """The loads link ``number`` carries of itself, largest over the positions, each named, with what it is taken
     over: for a ``force``, its weight and inertia force; else its inertia moment and its weight's moment over its

@@ -322,3 +322,43 @@ def test_a_free_length_of_zero_is_a_spring_that_always_pulls():
     reach = _xy(found.motion.point("B").r) - _xy(found.motion.point("D").r)
     (load,) = [each for each in found.loads if each.name == "F4"]
     np.testing.assert_allclose(np.asarray(load.force), -1000.0 * reach, rtol=1e-12)
+
+
+@pytest.mark.parametrize(("free_length", "told"), [
+    (500.0, "mm typed for m? 500 mm is loads[0].free_length = 0.5"),
+    (5e6, "no unit explains it: a mistaken value?"),
+    (0.5, None),
+    (2.0, None),  # squeezed to 0.215–0.302 of L0: past a coil spring's solid length, but told only past a fifth
+], ids=["in millimetres", "mistaken", "as meant", "squeezed hard"])
+def test_a_free_length_typed_in_millimetres_is_warned_of(free_length, told):
+    """The slider-crank's spring from D to B, 0.43–0.6 m long, given the free length 0.5 m as 500: squeezed by
+    499.5 m, its force dwarfs every load, with no word of why.  The lengths are worked out here from the positions."""
+    found = analyse(scene_of_text(_with_loads(SLIDER_CRANK, _spring(4, "B", "D", 3000.0, free_length))))
+    warnings = [warning.detail for warning in found.warnings if warning.code == "free-length-in-mm"]
+    if told is None:
+        assert not warnings
+        return
+    length = np.abs(_xy(found.motion.point("B").r) - _xy(found.motion.point("D").r))
+    (detail,) = warnings
+    from graphplan.render.numerals import number  # the warnings' way of writing numbers, not of working them out
+
+    assert detail.startswith(f"loads[0].free_length = {free_length:g} m is {number(free_length / length.max(), 3)} times "
+                             f"the longest the spring from D to B gets ({length.min():.3g}–{length.max():.3g} m over "
+                             "the positions), squeezed far past any spring's solid length")
+    assert told in detail
+
+
+@pytest.mark.parametrize(("locale", "said"), [
+    ("en", "the free length was probably given in millimetres where metres are asked for"),
+    ("ru", "вероятно, свободная длина задана в миллиметрах, а не в метрах"),
+    ("zh", "自由长度很可能按毫米而非米给出"),
+])
+def test_the_note_tells_of_a_free_length_in_millimetres(tmp_path, locale, said):
+    from graphplan.cli import main
+
+    scene = tmp_path / "spring.toml"
+    text = _with_loads(SLIDER_CRANK, _spring(4, "B", "D", 3000.0, 500.0))
+    scene.write_text(text.replace("[scene]", f'[scene]\nlocale = "{locale}"'), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note"]) == 0
+    assert said in (out / "note.md").read_text(encoding="utf-8")

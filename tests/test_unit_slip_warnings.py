@@ -247,7 +247,7 @@ def test_a_rotors_radius_in_millimetres_among_planes_in_metres_is_warned_of(tmp_
     assert f"mass 1's radius, 5 m, is {5.0 / 0.22:.3g} times the 0.22 m" in note
 
 
-_SLIPS = ("rev/min typed for rad/s", "grams typed for kg", "as millimetres,", " in radians: ", "mm/s typed for m/s")
+_SLIPS = ("rev/min typed for rad/s", "grams typed for kg", "as millimetres,", " in radians: ", "mm/s typed for m/s", "mm typed for m?")
 
 
 @pytest.mark.parametrize("scene", [*SCENES, *STARTERS], ids=str)
