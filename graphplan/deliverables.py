@@ -81,17 +81,17 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str 
         return None if scene.balancing is not None else "needs a [balancing] table"
     if piece == "vibration":
         return None if scene.vibration is not None else "needs a [vibration] table"
-    if piece == "dynamics" and scene.dynamics is not None and scene.dynamics.diagrams:
-        return None  # a load diagram needs no mechanism
+    if piece == "dynamics" and _diagrams_alone_do(scene):
+        return None
     if piece == "dynamics" and scene.dynamics is None:
         # Asked first: a rotor's scene told it "needs a mechanism" where a load diagram alone would do.
         return "needs a [dynamics] table"
     if piece == "note" and analysis is None and (
-            scene.balancing is not None or scene.vibration is not None or missing(scene, None, "dynamics") is None):
+            scene.balancing is not None or scene.vibration is not None or _diagrams_alone_do(scene)):
         return None  # the note on the machine's flywheel, rotor or vibration alone
     # A rotor's balancing and a machine's load diagrams have sheets of their own: a scene of them alone asked for
     # sheets on "none" was told it "needs a mechanism", which it does not, and not the sheet format that stops them.
-    drawn_on_sheets = analysis is not None or scene.balancing is not None or missing(scene, None, "dynamics") is None
+    drawn_on_sheets = analysis is not None or scene.balancing is not None or _diagrams_alone_do(scene)
     if piece == "sheets" and drawn_on_sheets:
         return f'needs a sheet format: {sheet_key} is "none"' if scene.drawing.sheet == "none" else None
     if analysis is None:
@@ -117,6 +117,11 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str 
     if piece == "figures" and analysis.equilibrium is None:
         return _NO_LOADS
     return None
+
+
+def _diagrams_alone_do(scene: Scene) -> bool:
+    """Whether ``[dynamics]`` gives load diagrams, which need no mechanism."""
+    return scene.dynamics is not None and bool(scene.dynamics.diagrams)
 
 
 def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None = None,
@@ -787,7 +792,7 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
         told += [line for line in (delta_warning(scene.dynamics), speed_unit_warning(scene.dynamics, crank),
                                    synchronous_warning(scene.dynamics), gear_warning(scene.dynamics, crank),
                                    rotor_inertia_warning(scene.dynamics,
-                                                         dynamics is not None and dynamics.asks_kilowatts()))
+                                                         dynamics is not None and dynamics.asks_kilowatts(), crank))
                  if line is not None] + speed_warnings(scene.dynamics)
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),

@@ -918,9 +918,7 @@ def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch
     from .machine_motion import KlossMotor
 
     motor = getattr(spec.motion, "motor", None)
-    # A mean speed typed in the other unit is told on its own line: the gear is weighed against the crank's.
-    against_crank = speed_unit_slip(spec, crank_omega) is not None
-    mean = spec.omega if spec.omega is not None and not against_crank else abs(crank_omega) if crank_omega else None
+    mean = _mean_speed(spec, crank_omega)
     own = _motor_own_speed(motor)
     if mean is None or own is None:
         return None
@@ -931,7 +929,15 @@ def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch
     if 1.0 / GEAR_MISMATCH <= at_shaft / mean <= most:
         return None
     return GearMismatch(where=spec.where, gear_ratio=motor.gear_ratio, what=what, speed=speed, at_shaft=at_shaft,
-                        mean=mean, against_crank=against_crank)
+                        mean=mean, against_crank=speed_unit_slip(spec, crank_omega) is not None)
+
+
+def _mean_speed(spec: DynamicsSpec, crank_omega: float | None) -> float | None:
+    """The machine's mean speed a motor is weighed against (rad/s): ``[dynamics]``' ``rpm`` or ``omega``, else the
+    crank's ``crank_omega``; None with neither."""
+    # A mean speed typed in the other unit is told on its own line: the motor is weighed against the crank's.
+    against_crank = speed_unit_slip(spec, crank_omega) is not None
+    return spec.omega if spec.omega is not None and not against_crank else abs(crank_omega) if crank_omega else None
 
 
 def _motor_own_speed(motor) -> tuple[float, str] | None:
@@ -1043,21 +1049,26 @@ def synchronous_warning(spec: DynamicsSpec) -> str | None:
 SLOWEST_OWN_RUN_UP_S = 60.0
 
 
-def rotor_inertia_warning(spec: DynamicsSpec, kilowatts_asked: bool = False) -> str | None:
+def rotor_inertia_warning(spec: DynamicsSpec, kilowatts_asked: bool = False,
+                          crank_omega: float | None = None) -> str | None:
     """The command line's line where ``[dynamics]``' motor would take more than :data:`SLOWEST_OWN_RUN_UP_S` to run
     its own rotor up to its speed at its own torque (a Kloss motor's rated ones, a linear one's no-load speed and
-    stall torque, J·ω/M): the rotor's inertia typed in kg·cm²; None for a constant motor, which has no speed of its
-    own, a motor with no rotor given, or one that runs it up in time.  A Kloss motor under 1000 W that would run it up
-    in time at a thousand times its power may have its power in kilowatts instead: where the stall's line asks that
-    (``kilowatts_asked``) nothing is said here; elsewhere both are asked (a 750 W motor is as likely as a 750 kW one
-    typed 750, and a machine it starts tells no stall)."""
-    from .machine_motion import KlossMotor, LinearMotor
+    stall torque, a constant one's torque and the machine's mean speed, ``rpm`` or ``omega`` else ``crank_omega``,
+    through its gear: J·ω/M): the rotor's inertia typed in kg·cm²; None for a motor with no rotor given, a constant
+    one of no torque or with no mean speed to go by, or one that runs it up in time.  A Kloss motor under 1000 W
+    that would run it up in time at a thousand times its power may have its power in kilowatts instead: where the
+    stall's line asks that (``kilowatts_asked``) nothing is said here; elsewhere both are asked (a 750 W motor is as
+    likely as a 750 kW one typed 750, and a machine it starts tells no stall)."""
+    from .machine_motion import ConstantTorque, KlossMotor, LinearMotor
 
     motor = getattr(spec.motion, "motor", None)
     if isinstance(motor, KlossMotor):
         speed, torque, named = motor.rated_speed, motor.rated_torque, "J·ωN/MN"
     elif isinstance(motor, LinearMotor):
         speed, torque, named = motor.no_load, motor.stall_torque, "J·ω0/M0"
+    elif isinstance(motor, ConstantTorque) and motor.torque and (mean := _mean_speed(spec, crank_omega)):
+        # A constant torque has no speed of its own: the rotor runs at the machine's, through the gear.
+        speed, torque, named = mean * motor.gear_ratio, abs(motor.torque), "J·u·ωm/M"
     else:
         return None
     inertia = motor.rotor_inertia

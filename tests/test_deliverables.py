@@ -769,3 +769,18 @@ def test_the_start_s_angle_is_the_crank_s_own_as_the_results_give_it(tmp_path):
     motion = document["dynamics"]["motion"]
     assert motion["stalled_at"] == 0.0
     assert motion["stalled_at_angle_deg"] == pytest.approx(300.0)
+
+
+def test_what_a_machine_without_load_diagrams_needs_is_told_without_an_analysis():
+    """Asked of a scene with no analysis to go by, what its [dynamics] table (a motor, no load diagrams) needs
+    asked itself the same question again, without end, until the stack ran out."""
+    from graphplan.deliverables import missing
+    from graphplan.scene import loads
+
+    text = starter("crank-rocker", "en") + '\n[dynamics]\ndelta = 0.05\n[dynamics.motor]\nkind = "constant"\n' \
+        "torque = 5.0\n"
+    machine = loads(text)
+    assert not machine.dynamics.diagrams
+    for piece in ("dynamics", "note", "sheets", "velocity"):
+        # None stands for no linkage: what the linkage's pieces need, and the machine's with them.
+        assert missing(machine, None, piece).startswith("needs a mechanism"), piece

@@ -308,6 +308,33 @@ def test_a_linear_motors_rotor_is_weighed_at_its_stall_torque_and_no_load_speed(
     assert [_run_up(line) == pytest.approx(seconds, rel=1e-3) for line in lines] == ([True] if told else [])
 
 
+@pytest.mark.parametrize(("inertia", "told"), [(200.0, True), (10.0, False)])
+def test_a_constant_motors_rotor_is_weighed_at_its_torque_and_the_machines_speed_through_its_gear(inertia, told):
+    """A constant torque has no speed of its own, and its rotor in kg·cm² passed with no word: it runs at the
+    press's 100 rpm times the gear's 14.4.  t = J·u·ωm/M: 1005 s for 200 kg·m² at 30 N·m, 50.3 s for 10."""
+    seconds = inertia * 14.4 * MEAN_OMEGA / 30.0
+    assert (seconds > 60.0) == told
+    lines = [line for line in _told_of_the_scene(_press(CONSTANT, rotor_inertia=repr(inertia)))
+             if "rotor_inertia" in line]
+    assert [_run_up(line) == pytest.approx(seconds, rel=1e-3) for line in lines] == ([True] if told else [])
+    if told:
+        assert lines[0].endswith(f"kg·cm² typed for kg·m²? ({inertia:g} kg·cm² is dynamics.motor.rotor_inertia = "
+                                 f"{inertia / 1e4:g})")
+
+
+def test_a_constant_motors_rotor_is_weighed_at_the_cranks_speed_where_the_dynamics_give_none():
+    # The crank-rocker starter with a [dynamics] table of no speed of its own: the crank's |ω1| is the mean.
+    from graphplan.deliverables import outcome_warnings
+
+    text = starter("crank-rocker", "en") + ('\n[dynamics]\ndelta = 0.05\n[dynamics.motor]\nkind = "constant"\n'
+                                            "torque = 5.0\ngear_ratio = 10.0\nrotor_inertia = 100.0\n")
+    machine = scene.loads(text)
+    assert machine.dynamics.omega is None
+    lines = [line for line in outcome_warnings(machine, ("dynamics",), None) if "rotor_inertia" in line]
+    seconds = 100.0 * 10.0 * abs(machine.driver.omega) / 5.0
+    assert [_run_up(line) == pytest.approx(seconds, rel=1e-3) for line in lines] == [True]
+
+
 def test_a_kloss_motors_power_in_kilowatts_is_left_to_the_stall_not_blamed_on_its_rotor(tmp_path, capsys):
     # power = 4 for 4 kW: the rotor takes 1000 times its 0.11 s, 114 s, which the kilowatts explain alone.
     lines = _warnings(tmp_path, capsys, _press(KLOSS, power="4.0"))
