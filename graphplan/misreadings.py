@@ -470,8 +470,10 @@ def _matching_segments(position: VelocityPosition, row: ErrorRow, precision: flo
             if length > precision and abs(millimetres - length) <= precision:
                 matches.append(Segment(plan, "".join(reading.segment), length, plan != kind))
         # A normal or Coriolis component is laid off, not read, so no reading names it; but a student who measured
-        # it (ak, an3) and typed it under the segment beside it (ka4, n3b) is told which component it is.
-        for step in position.plans[plan].steps:
+        # it (ak, an3) and typed it under the segment beside it (ka4, n3b) is told which component it is.  Only on
+        # the reading's own plan: a velocity plan has none beside its segments, and a velocity reading of the
+        # length of an acceleration plan's component is chance (ab = 3.5 mm "is the acceleration plan's an3").
+        for step in position.plans[plan].steps if plan == kind else ():
             for vector in step.vectors:
                 key = (plan, frozenset((vector.start, vector.end)))
                 if key in seen or not any(mark in vector.meaning for mark in ("ᵏ", "ⁿ")):
@@ -777,13 +779,14 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
                                                            for reading, value in found.force_scale.items()))
                 + ": read off the free-body arrows, which the force sheet draws at a μF of their own, or off a "
                   "polygon drawn at that μF?")
+        elsewhere = None if motion is None or not found.misread else \
+            fitting_position(mechanism, motion, numbers, position, precision)
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
                 f"{quantity_symbol(row.quantity)} = {row.plan + 0.0:.4g} against {plan + 0.0:.4g}, "
                 + (f"{abs(row.plan - plan) / abs(plan) * 100.0:.1f} % off" if plan else "where the plan has none")
                 for row, plan in rows) for reading, rows in found.misread.items())
-            elsewhere = None if motion is None else _fitting_position(mechanism, motion, numbers, position, precision)
             question = "a length misread, or a segment taken for another?" if elsewhere is None else (
                 f"every reading of the plans fits position {elsewhere} instead (none far off its exact values): "
                 f"readings of position {elsewhere}'s plans, or of plans drawn with the positions counted or numbered "
@@ -794,7 +797,9 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
             details.append(f"the readings given for the {kind} plan are the {other} plan's {', '.join(names)} (each to "
                            f"the drafting precision, {precision:g} mm): readings of the {other} plan typed under "
                            f"{kind}?")
-        if found.named:
+        # Another position's readings explain every one: a far-off reading that is by chance another segment's
+        # length here is no lead to follow.
+        if found.named and elsewhere is None:
             named = "; ".join(f"{reading} is " + " or ".join(
                 f"the {segment.plan} plan's {segment.name} ({segment.millimetres:.2f} mm as constructed)"
                 for segment in segments) for reading, segments in found.named.items())
@@ -812,15 +817,17 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
 _FEWEST_TELLING = 3
 
 
-def _fitting_position(mechanism: Mechanism, motion: Motion, numbers: Sequence[int], position: VelocityPosition,
-                      precision: float) -> int | None:
+def fitting_position(mechanism: Mechanism, motion: Motion, numbers: Sequence[int], position: VelocityPosition,
+                     precision: float) -> int | None:
     """The number of the one other position at whose exact motion none of ``position``'s hand readings of the plans
     is far off (:func:`_far_off`, by magnitude: a reading gives ω's sense as its own plan is drawn), where there are
     enough of them to tell (:data:`_FEWEST_TELLING`); None where none, or more than one, fits.  A student who drew
     the plans of twelve positions and then set 24, or numbered them from 1 where the scene numbers from 0, gave
     readings of one position under another's number."""
     rows = [row for row in position.errors if row.source == "measured" and _plan_of(row) != "forces"]
-    if len(rows) < _FEWEST_TELLING:
+    # Readings, not rows: one segment gives several values (pb: VB, VBC, ω4), and one reading of 0 mm fitted the
+    # position where the output link stands still.
+    if len({row.reading for row in rows}) < _FEWEST_TELLING:
         return None
     table = list(position.readings)
     fitting = []

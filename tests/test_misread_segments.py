@@ -65,3 +65,23 @@ def test_the_other_plan_s_readings_typed_under_the_wrong_table_are_named():
     acceleration = _lengths("acceleration", ("pb", "pe", "ps3"))
     detail, _ = _far_off({"velocity": acceleration})
     assert "the readings given for the velocity plan are the acceleration plan's pb, pe, ps3" in detail, detail
+
+
+def test_a_velocity_reading_is_not_named_an_acceleration_plans_component():
+    """A component (an3, pn4) is laid off on the acceleration plan beside the segment it is typed under there; a
+    velocity plan has none, and a far-off velocity reading of a component's length was named it by chance."""
+    position = next(p for p in analyse(_scene()).plans if p.number == POSITION)
+    components = {f"{vector.start}{vector.end}": abs(position.plans["acceleration"].mm(vector.end)
+                                                     - position.plans["acceleration"].mm(vector.start))
+                  for step in position.plans["acceleration"].steps for vector in step.vectors
+                  if "ⁿ" in vector.meaning}
+    (name, length), = [(key, value) for key, value in components.items() if key.endswith("n3")]
+    velocity = _lengths("velocity", ("pb", "ab", "pe", "ps3"))
+    assert abs(length - velocity["ab"]) > 0.15 * velocity["ab"]  # far off its own segment
+    detail, _ = _far_off({"velocity": {**velocity, "ab": round(length, 2)}})
+    assert f"ab = {round(length, 2):g} mm gives" in detail
+    assert f"{name} (" not in detail and "a length misread, or a segment taken for another?" in detail
+    # On its own plan a component typed under its segment is still named (n3b given an3's length).
+    acceleration = _lengths("acceleration", ("pb", "pe"))
+    detail, _ = _far_off({"acceleration": {**acceleration, "n3b": round(length, 2)}})
+    assert f"n3b = {round(length, 2):g} mm is the acceleration plan's {name} (" in detail, detail

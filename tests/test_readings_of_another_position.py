@@ -67,3 +67,40 @@ def test_one_reading_misread_is_not_taken_for_another_position_s():
     assert "pb = 60 mm gives VB" in detail
     assert "a length misread, or a segment taken for another?" in detail
     assert "instead (none far off its exact values)" not in detail
+
+
+@pytest.mark.parametrize(("locale", "said"), [
+    ("en", "Every reading of the plans fits position {n} instead (none far off its exact values): readings of position "
+           "{n}'s plans, or of plans drawn with the positions counted or numbered otherwise (positions.count, start, "
+           "number_from)?"),
+    ("ru", "Зато все замеры планов подходят к положению {n} (ни один не далёк от его точных значений)"),
+    ("zh", "而全部实测值都与位置 {n} 相符（均不远离其精确值）"),
+])
+def test_the_error_table_and_the_note_say_the_position_the_readings_fit(fixture_analysis, tmp_path, locale, said):
+    """The console told it; errors.md and the note, which are handed in, asked only of a length misread, and named
+    a reading that is by chance another segment's length as "segments taken for one another"."""
+    from graphplan.cli import main
+    from graphplan.locale import strings
+
+    text = _edited("count       = 12", "count       = 24")
+    read_at = _number_at_angle(loads(text).analyse(), _angle_of(fixture_analysis, 5))
+    scene = tmp_path / "scene.toml"
+    scene.write_text(_edited('locale  = "ru"', f'locale  = "{locale}"', text), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "errors,note", "--sheet", "none"]) == 0
+    words = strings(locale)
+    question = words["errors_misread"].split("{readings}")[1].lstrip(".。 ")
+    for name in ("errors.md", "note.md"):
+        written = (tmp_path / "out" / name).read_text(encoding="utf-8")
+        assert said.format(n=read_at) in written, name
+        assert question not in written, name
+        assert words["errors_named"].split("{precision}")[0] not in written, name
+
+
+def test_one_reading_is_too_few_to_tell_another_position():
+    """One segment gives three rows (pb: VB, VBC, ω4), which were counted as three readings: pb = 0.3 mm, read at
+    position 5, fitted position 0, where the rocker stands still, and was told a reading of that position's."""
+    block = FIXTURE[FIXTURE.index("velocity     = { pb = 38.82"):FIXTURE.index("[drawing]")]
+    detail, = _far_off(loads(_edited(block, "velocity = { pb = 0.3 }\n\n")).analyse())
+    assert "pb = 0.3 mm gives VB" in detail
+    assert "a length misread, or a segment taken for another?" in detail
+    assert "instead (none far off its exact values)" not in detail

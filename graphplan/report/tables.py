@@ -25,6 +25,7 @@ from ..misreadings import (
     OnSheet,
     Rescaled,
     factor_text,
+    fitting_position,
     in_units,
     off_the_other_plan,
     on_grid,
@@ -171,12 +172,15 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             fit=text["errors_pole_fit"].format(key=rescaled.key.removeprefix("drawing."),
                                                fit=number(rescaled.setting, 4, mark))
             if rescaled.key.endswith("_pole") else "") + _shared_caveat(analysis, plan, drawn, rescaled, text, mark))
+    elsewhere = None
     if found.misread:
         # A segment's name may be on both plans (pb): the quantities it gives say which.
         readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity, text) for row, _ in rows)})"
                              for rows in found.misread.values())
-        lines.append(text["errors_misread"].format(
-            percent=f"{FAR_OFF_PERCENT:g}", readings=readings,
+        elsewhere = fitting_position(analysis.mechanism, analysis.motion, analysis.positions.numbers, plan,
+                                     analysis.scene.drawing.drafting_precision)
+        lines.append(text["errors_misread" if elsewhere is None else "errors_misread_elsewhere"].format(
+            percent=f"{FAR_OFF_PERCENT:g}", readings=readings, elsewhere=elsewhere,
             millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
     for typed, readings in (("metres", found.metres), ("centimetres", found.centimetres)):
         if readings:
@@ -202,7 +206,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     for other, names in found.other_plan.values():
         # Readings of the other plan typed under this one's table: named, with the other plan's segments they are.
         lines.append(text[f"errors_other_plan_{other}"].format(segments=", ".join(names), precision=precision))
-    if found.named:
+    if found.named and elsewhere is None:  # as the console: another position's readings explain every one
         items = "; ".join(text["errors_or"].join(
             text[f"errors_segment_{segment.plan}"].format(
                 reading=_written(reading, text, mark), segment=segment.name,
