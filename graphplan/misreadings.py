@@ -278,6 +278,13 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
         if quantity is not None:
             values[reading] = (quantity, millimetres, abs(rows[0][1]) / rows[0][0].per_millimetre)
             del misread[reading]
+            continue
+        # A tangential component gives its link's ε alone (n3b), and typed as its value in m/s² (ε3·lAB) it was
+        # told a length misread, where aBA typed so was told the value it stands for.
+        tangential = _tangential(position, rows[0][0])
+        if tangential is not None and abs(millimetres - tangential[1]) <= VALUE_TYPED_SHARE * tangential[1]:
+            values[reading] = (tangential[0], millimetres, tangential[2])
+            del misread[reading]
     force_scale = {}
     for reading, rows in list(misread.items()):
         row, plan = rows[0]
@@ -304,6 +311,21 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
                                    for kind, (other, read) in other_plan.items()}),
                  MappingProxyType(typed_in["metres"]), MappingProxyType(typed_in["centimetres"]),
                  MappingProxyType(force_scale), MappingProxyType(values), on_sheet)
+
+
+def _tangential(position: VelocityPosition, row: ErrorRow) -> tuple[str, float, float] | None:
+    """For a reading of a tangential component (the segment that gives a link's ε), the component as the plan
+    letters it (``aBAτ``), its value (m/s²) and its length as constructed (mm); None for another reading."""
+    segment = _segment_of(position, row)
+    plan = position.plans.get("acceleration")
+    if not row.quantity.startswith("epsilon") or segment is None or plan is None:
+        return None
+    vector = next((vector for step in plan.steps for vector in step.vectors
+                   if {vector.start, vector.end} == set(segment) and "τ" in vector.meaning), None)
+    if vector is None:
+        return None
+    millimetres = segment_millimetres(plan, segment)
+    return vector.meaning.replace("^τ", "τ"), millimetres * plan.scale, millimetres
 
 
 def _read_on_sheet(row: ErrorRow, on_sheet: OnSheet) -> bool:

@@ -85,3 +85,24 @@ def test_a_velocity_reading_is_not_named_an_acceleration_plans_component():
     acceleration = _lengths("acceleration", ("pb", "pe"))
     detail, _ = _far_off({"acceleration": {**acceleration, "n3b": round(length, 2)}})
     assert f"n3b = {round(length, 2):g} mm is the acceleration plan's {name} (" in detail, detail
+
+
+def test_a_tangential_component_typed_as_its_value_is_told_so():
+    """n3b gives ε3 alone; typed as aBAτ = ε3·lAB in m/s² it was told a length misread, where aBA typed so was told
+    the value it stands for.  The value is worked out here from the plan's ε3 and the coupler's length."""
+    from graphplan.scene import loads
+    from graphplan.starters import starter
+
+    text = starter("slider-crank", "en")
+    scene = loads(text)
+    position = next(p for p in analyse(scene).plans if p.number == 2)
+    (epsilon3,) = [row.plan for row in position.errors if row.source == "construction" and row.quantity == "epsilon3"]
+    coupler = scene.groups[0].length
+    typed = round(abs(epsilon3) * coupler, 1)
+    acceleration = {"pb": round(abs(position.plans["acceleration"].mm("b")), 2), "n3b": typed}
+    analysis = analyse(loads(text + f"\n[measured.2]\nacceleration = {{ pb = {acceleration['pb']}, n3b = {typed} }}\n"))
+    (detail,) = [w.detail for w in analysis.warnings if w.code == "measured-far-off"]
+    assert f"n3b = {typed:g} mm is aBAτ = {typed:.4g} m/s²" in detail, detail
+    assert "a length misread" not in detail
+    assert f"n3b = {typed:g} мм — это aBAτ = {typed:.4g} м/с²".replace(".", ",") in markdown(
+        analyse(dataclasses.replace(analysis.scene, locale="ru")))
