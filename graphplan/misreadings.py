@@ -741,7 +741,9 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
                 what = (f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons") \
                     if rescaled.kind == "forces" else f"the {rescaled.kind} plan"
                 # A plan drawn at a tenth of its pole is a drawing one might make; at a thousandth, none.
-                drawn_so = f"; or, drawn at that scale, give {setting(rescaled)}" if unit == "centimetres" else ""
+                drawn_so = (f"; or, drawn at that scale, give {setting(rescaled)}"
+                            f"{_shared_caveat(rescaled, position, drawn, drawing, joint, sheets)}"
+                            if unit == "centimetres" else "")
                 details.append(f"every reading of {what} is {rescaled.ratio:.4g} times its length as constructed, "
                                f"{share}: lengths typed in {unit}? give the millimetres measured (each reading "
                                f"times {factor}){drawn_so}")

@@ -32,12 +32,12 @@ def test_a_balancing_moment_signed_as_drawn_is_refused_with_its_size_to_give():
     assert "sense is taken from the force analysis" in message, message
 
 
-def _velocity_plan_lengths():
-    """pb, ab, ps3 (mm) of position 3's velocity plan, worked out here from the offset slider-crank's closed form:
+def _velocity_plan_lengths(number=POSITION):
+    """pb, ab, ps3 (mm) of position ``number``'s velocity plan (3's unless said), worked out here from the offset slider-crank's closed form:
     A on the crank (r = 0.08 m at ω = 6.3 rad/s), B on the guide y = 0.08 m ahead of A (AB = 0.26 m), S3 AB's middle,
     μV = ω·r / 80 mm (velocity_pole = 80)."""
     analysis = analyse(dataclasses.replace(graphplan.load(FIXTURE), measured={}))
-    phi = float(analysis.motion.driver[next(p for p in analysis.plans if p.number == POSITION).index])
+    phi = float(analysis.motion.driver[next(p for p in analysis.plans if p.number == number).index])
     r, length, e, omega = 0.08, 0.26, 0.08, 6.3
     ax, ay = r * math.cos(phi), r * math.sin(phi)
     bx = ax + math.sqrt(length**2 - (e - ay) ** 2)
@@ -65,6 +65,23 @@ def test_a_velocity_plan_typed_in_centimetres_is_told_so_not_as_a_pole_of_8_mm()
             "centimetres? Give the millimetres measured (each reading times 10)") in table, table
     _, table = _far_off({"velocity": {name: round(value / 10.0, 2) for name, value in lengths.items()}}, "ru")
     assert "не введены ли длины в сантиметрах?" in table, table
+
+
+def test_a_plan_typed_in_centimetres_is_told_the_key_it_would_give_sets_the_other_positions_too():
+    """Position 10's plan typed in centimetres, position 3's in millimetres: the advice to give velocity_pole = 8
+    (drawn at a tenth) did not say it would put position 3's right readings off, as a plan drawn at another pole is
+    told."""
+    readings = {3: {name: round(value, 2) for name, value in _velocity_plan_lengths(3).items()},
+                10: {name: round(value / 10.0, 2) for name, value in _velocity_plan_lengths(10).items()}}
+    scene = dataclasses.replace(graphplan.load(FIXTURE), measured={number: {"velocity": velocity}
+                                                                   for number, velocity in readings.items()})
+    analysis = analyse(scene)
+    (detail,) = [w.detail for w in analysis.warnings if w.code == "measured-far-off"]
+    assert detail.startswith("measured.10: every reading of the velocity plan is")
+    assert "lengths typed in centimetres?" in detail
+    assert ("; but velocity_pole sets the scale of position 3 too, whose readings fit the present scale and would then "
+            "be off: rather keep it and give the readings of position 10 times") in detail, detail
+    assert "But velocity_pole sets the scale of position 3 too" in markdown(analysis)
 
 
 def test_one_reading_typed_in_centimetres_is_told_so():

@@ -141,8 +141,10 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             what = (text["errors_what_polygon"].format(label=rescaled.polygon) if rescaled.polygon
                     else text["errors_what_polygons"]) if rescaled.kind == "forces" \
                 else text["errors_what_plan"].format(plan=text[f"{rescaled.kind}_plan_title"].lower())
+            # The key a drawing at a tenth is set by may set other positions' too, as for any scale it gives.
+            caveat = _shared_caveat(analysis, plan, drawn, rescaled, text, mark) if typed[0] == "centimetres" else ""
             lines.append(text[f"errors_typed_{typed[0]}"].format(what=what, ratio=number(rescaled.ratio, 4, mark),
-                                                              setting=setting(rescaled)))
+                                                              setting=setting(rescaled)) + caveat)
             continue
         if rescaled.kind == "forces":
             caveat = "" if in_units(rescaled.drawn_at) else _shared_caveat(analysis, plan, drawn, rescaled, text, mark)
