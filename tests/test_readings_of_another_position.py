@@ -70,9 +70,9 @@ def test_one_reading_misread_is_not_taken_for_another_position_s():
 
 
 @pytest.mark.parametrize(("locale", "said"), [
-    ("en", "Every reading of the plans fits position {n} instead (none far off its exact values): readings of position "
-           "{n}'s plans, or of plans drawn with the positions counted or numbered otherwise (positions.count, start, "
-           "number_from)?"),
+    ("en", ("Every reading of the plans fits position {n} instead (none far off its exact values): readings of position "
+            "{n}'s plans, or of plans drawn with the positions counted or numbered otherwise (positions.count, start, "
+            "number_from)?")),
     ("ru", "Зато все замеры планов подходят к положению {n} (ни один не далёк от его точных значений)"),
     ("zh", "而全部实测值都与位置 {n} 相符（均不远离其精确值）"),
 ])
