@@ -579,11 +579,20 @@ def split_segment(name: str, letters: list[str], where: str) -> tuple[str, str]:
         if name.startswith(first) and name[len(first):] in letters:
             return (first, name[len(first):])
     kind = where.split(".")[2:3]
+    listed = ", ".join(sorted(letters))
+    hint = _lettering_hint(name, letters, [a + b for a in letters for b in letters if a != b])
+    # Its first letter the plan's, the rest none: the rest is what to look at (px, ak on a plan with no k), not
+    # the pole or the case of letters that are right.
+    first = next((letter for letter in letters if name.startswith(letter)), None)
+    if first is not None and not hint:
+        typed = where.rsplit(".", 1)[-1]
+        shown = "π (p)" if first == "p" and typed.startswith("π") else first  # the pole as the reading wrote it
+        raise SceneError(where, f"is no segment of the plan: {shown} is one of its letters, {name[len(first):]} is "
+                         f"none ({listed})")
     pole = " (its pole π is p)" if "p" in letters and kind == ["acceleration"] else ""
     if kind == ["velocity"] and "π" in name:
         pole = " (π is the acceleration plan's pole; the velocity plan's is p)"
-    raise SceneError(where, f"is not two letters of the plan ({', '.join(sorted(letters))}){pole}"
-                     f"{_lettering_hint(name, letters, [a + b for a in letters for b in letters if a != b])}")
+    raise SceneError(where, f"is not two letters of the plan ({listed}){pole}{hint}")
 
 
 def _reaction_names(forces: ForcePlan) -> list[str]:
@@ -602,7 +611,7 @@ def _lettering_hint(name: str, letters: list[str], names: list[str]) -> str:
     if cyrillic:
         written = ", ".join(f"'{letter}' (U+{ord(letter):04X})" for letter in cyrillic)
         return f"; it has the Cyrillic letter{'s' if len(cyrillic) > 1 else ''} {written}: type the Latin one"
-    if name != name.lower() and any(name.lower().startswith(letter) for letter in letters):
+    if name != name.lower() and name.lower() in names:
         return f"; the plan's letters are small: write {name.lower()}"
     # 机械原理 letters the acceleration plan p′, b′; an input method types ｐｂ in full width.
     plain = unicodedata.normalize("NFKC", name).translate(_PRIMES)

@@ -1342,8 +1342,7 @@ def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, f
             if not lengths.data:
                 raise SceneError(lengths.path, "has no readings: give the lengths measured off the plan "
                                                "(pb = 42.5, …), or leave the table out")
-            readings[plan] = MappingProxyType({name: lengths.number(name, non_negative=True)
-                                               for name in list(lengths.data)})
+            readings[plan] = MappingProxyType({name: _reading_length(lengths, name, plan) for name in list(lengths.data)})
         # The balancing moment (a crank, N·m) or force (a slider, N) the student found by hand: a value, not a length,
         # its size alone (its sense is the force analysis's, as ω's is the plan's).
         balancing = entry.number("balancing", None)
@@ -1358,6 +1357,18 @@ def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, f
         # Read-only all the way down: scene.measured[5]["velocity"]["pb"] = 1.0 changed what plan(5) read.
         measured[number] = MappingProxyType(readings)
     return measured
+
+
+def _reading_length(lengths: Table, name: str, drawing: str) -> float:
+    """A segment's length read off a ``drawing`` (a plan, or the force polygons), mm: its size, as a ruler gives it."""
+    length = lengths.number(name)
+    if length < 0:
+        # A vector read backwards, or signed as ω is: the sense is the construction's, the reading a length.
+        sense = ("its sense is taken from the force analysis" if drawing == "forces" else
+                 "its sense is taken from the construction, as the ω and ε it gives take the plan's")
+        raise SceneError(lengths.where(name), f"must be >= 0: a reading is the segment's length, give {-length:g}; "
+                         f"{sense}", length)
+    return length
 
 
 def _numbered(key: str, where: str, problem: str) -> int:

@@ -174,7 +174,8 @@ def test_check_refuses_a_reading_that_names_no_segment_of_the_plan_as_the_run_do
                      encoding="utf-8")
     assert main(["check", str(scene)]) == 2
     checked = capsys.readouterr().err
-    assert checked.startswith("graphplan: error: measured.11.velocity.pz: is not two letters of the plan")
+    assert checked.startswith("graphplan: error: measured.11.velocity.pz: is no segment of the plan: p is one of its "
+                              "letters, z is none (")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     assert without_progress(capsys.readouterr().err) == checked
 

@@ -130,8 +130,10 @@ def test_the_acceleration_plans_pole_may_be_written_as_it_is_drawn(analysis):
     for quantity in ("aB", "aS3"):
         assert as_drawn[quantity].plan == as_named[quantity].plan
         assert as_drawn[quantity].percent == as_named[quantity].percent
-    with pytest.raises(SceneError, match=r"its pole π is p"):
+    with pytest.raises(SceneError, match=r"is no segment of the plan: π \(p\) is one of its letters, q is none"):
         analyse(with_measured({5: {"acceleration": {"πq": 10.0}}}))
+    with pytest.raises(SceneError, match=r"is not two letters of the plan \(.*\) \(its pole π is p\)"):
+        analyse(with_measured({5: {"acceleration": {"ob": 10.0}}}))
 
 
 def test_the_csv_writes_an_error_of_rounding_as_none(tmp_path):

@@ -884,11 +884,13 @@ CASES: list[Case] = [
     Case("measured-reading-string", {"measured.5.velocity.pb": "39"}, "measured.5.velocity.pb",
          "must be a number, not a string (got '39'); TOML numbers take no quotes: write 39"),
     Case("measured-reading-negative", {"measured.5.velocity.pb": -39.0}, "measured.5.velocity.pb",
-         "must be >= 0 (got -39.0)"),
+         "must be >= 0: a reading is the segment's length, give 39; its sense is taken from the construction, as the "
+         "ω and ε it gives take the plan's (got -39.0)"),
     Case("measured-reading-nan", {"measured.5.acceleration.pb": NAN}, "measured.5.acceleration.pb",
          "must be a finite number (got nan)"),
     Case("measured-force-negative", {"measured.5.forces": {"R23": -52.5}}, "measured.5.forces.R23",
-         "must be >= 0 (got -52.5)"),
+         "must be >= 0: a reading is the segment's length, give 52.5; its sense is taken from the force analysis "
+         "(got -52.5)"),
     Case("measured-forces-list", {"measured.5.forces": [52.5]}, "measured.5.forces",
          "must be a table, not a list (got [52.5])"),
     Case("measured-unknown-key", {"measured.5.velocty": {"pb": 39.0}}, "measured.5.velocty",
@@ -1118,7 +1120,16 @@ def test_invalid_toml(text: str, line: int) -> None:
       "no prime: write pb")),
     ({"velocity": {"ｐｂ": 38.82}}, "measured.5.velocity.ｐｂ",
      "is not two letters of the plan (a, b, e, p, s2, s3, s4); it has full-width letters: write pb"),
-], ids=["cyrillic-letter", "capitals", "pi-on-the-velocity-plan", "cyrillic-reaction", "primed", "full-width"])
+    # Capitals of a point the plan has not: "write ps5" was a fix refused in its turn.
+    ({"velocity": {"pS5": 30.0}}, "measured.5.velocity.pS5",
+     "is no segment of the plan: p is one of its letters, S5 is none (a, b, e, p, s2, s3, s4)"),
+    # A point the plan has not after its pole: the pole was not the slip, nor were the letters "not two".
+    ({"acceleration": {"ak": 3.0}}, "measured.5.acceleration.ak",
+     "is no segment of the plan: a is one of its letters, k is none (a, b, e, n3, n4, p, s2, s3, s4)"),
+    ({"velocity": {"px": 126.2}}, "measured.5.velocity.px",
+     "is no segment of the plan: p is one of its letters, x is none (a, b, e, p, s2, s3, s4)"),
+], ids=["cyrillic-letter", "capitals", "pi-on-the-velocity-plan", "cyrillic-reaction", "primed", "full-width",
+        "capitals-of-no-point", "no-such-point-after-a-letter", "no-such-point-after-the-pole"])
 def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, problem) -> None:
     """A Russian student's slips: a Cyrillic р or Р that looks Latin, capitals, π on the velocity plan; a Chinese
     student's: 机械原理's primed letters of the acceleration plan (p′b′), an input method's full-width ｐｂ."""
