@@ -36,6 +36,11 @@ FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
     ("(m1r1)L", (("(m", LINE), ("1", BELOW), ("r", LINE), ("1", BELOW), (")", LINE), ("L", BELOW))),
     ("s2", (("s", LINE), ("2", BELOW))),
     ("aGEⁿ = 0.0385 m/s²", (("a", LINE), ("GE", BELOW), ("ⁿ = 0.0385 m/s²", LINE))),
+    # A diagram's velocity of a point named in another script, or in a word, as its s and a beside it: it was left
+    # flat (vБ beside s_Б, a_Б), where a point named B was indexed.
+    ("Velocity diagram vБ(φ)", (("Velocity diagram v", LINE), ("Б", BELOW), ("(φ)", LINE))),
+    ("sБ, vБ, aБ", (("s", LINE), ("Б", BELOW), (", v", LINE), ("Б", BELOW), (", a", LINE), ("Б", BELOW))),
+    ("|vSLIDEPIN|", (("|v", LINE), ("SLIDEPIN", BELOW), ("|", LINE))),
 ])
 def test_a_text_is_cut_into_its_runs_on_below_and_above_the_line(text, expected):
     assert runs(text) == expected

@@ -19,7 +19,7 @@ import dataclasses
 import re
 from collections.abc import Collection, Iterable, Sequence
 
-from ..report.symbols import Symbol, occurrences, pieces
+from ..report.symbols import CAPITALS, Symbol, occurrences, pieces
 from .primitives import USER_LAYERS, Layer, Text
 
 #: A run's place: on the line, below it (an index) or above it (a component).
@@ -32,7 +32,8 @@ _DRAWING_SYMBOL = re.compile(
     r"|(?P<point>[A-Za-zσΣ])(?P<number>\d+)"
     r"|(?P<swing>ψ)(?P<extreme>max|min)"
     r"|(?P<angle>θ)(?P<plane>[A-Z])"
-    r"|(?P<speed>v)(?P<of>[A-Z]\d*)"
+    # A point's name in any script, as the scene names it (vB, vБ, vSLIDEPIN), as s and a beside it are indexed.
+    rf"|(?P<speed>v)(?P<of>[{CAPITALS}][{CAPITALS}0-9]*)"
     r")(?![\w])")
 
 Run = tuple[str, int]
