@@ -442,18 +442,24 @@ def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_s
     assert all(inside(rect, sheet_.frame) for sheet_ in sheets for rect in sheet_.panels.values())
 
 
-@pytest.mark.parametrize("name, sheet", [("shaper_six_bar", "A1"), ("ratchet_crank_rocker", "A1"),
-                                         ("triad_class_iii", "A1"), ("shaper_six_bar", "A2")])
+@pytest.mark.parametrize("name, sheet", [("fixtures/shaper_six_bar", "A1"), ("fixtures/ratchet_crank_rocker", "A1"),
+                                         ("fixtures/triad_class_iii", "A1"), ("fixtures/shaper_six_bar", "A2"),
+                                         ("tests/scenes/long_coupler_crank_rocker", "A1"),
+                                         ("tests/scenes/long_coupler_crank_rocker", "A3")])
 def test_without_a_length_scale_a_drawing_a_step_smaller_saves_sheets(name, sheet):
     """Of the standard μl from the largest drawing that fits down to paths of the points 120 mm across, the
     one taken lays the set on the fewest sheets, and of those it draws largest: each μl is counted here
-    by laying the whole set of sheets out at it."""
-    scene = graphplan.load(f"fixtures/{name}.toml")
+    by laying the whole set of sheets out at it.  The largest drawing starts at the μl that draws the paths
+    within 200 mm, or the step finer where that one draws them under 120 mm (the long coupler's 103 mm at 1:10,
+    a thumbnail in the corner of an A1 sheet)."""
+    scene = graphplan.load(f"{name}.toml")
     scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet=sheet))
     analysis = analyse(scene)
     tracks = np.concatenate([np.atleast_1d(path.r) for path in analysis.paths.points.values()])
     span = max(np.ptp(tracks.real), np.ptp(tracks.imag))
-    largest = drawings.fitting_length_scale(analysis, sheet, min(value for value in STANDARD if value >= span / 200))
+    within = min(value for value in STANDARD if value >= span / 200)
+    start = max(value for value in STANDARD if value < within) if span / within < 120 else within
+    largest = drawings.fitting_length_scale(analysis, sheet, start)
     diagrams = (diagrams_panel(analysis, sheet),) if scene.positions.working is not None else ()
 
     def sheet_count(scale):

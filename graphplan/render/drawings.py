@@ -17,7 +17,14 @@ from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
 from ..positions import working_speed
-from ..scales import LARGEST_PAPER_MM, fit_scale, format_scale, next_standard_scale, standard_scale
+from ..scales import (
+    LARGEST_PAPER_MM,
+    finer_standard_scale,
+    fit_scale,
+    format_scale,
+    next_standard_scale,
+    standard_scale,
+)
 from ..scene import Working
 from ..statics import efficiency, rounded_zero
 from ..unit_slips import velocity_slip_hint
@@ -32,6 +39,11 @@ from .title_block import form_of
 
 # The plan of positions is scaled to fit this field when the scene gives no μl.
 POSITIONS_FIELD_MM = 200.0
+# A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
+# this would run its outlines and position numbers together: μl is made no larger for fewer sheets, and where the
+# standard μl that fits POSITIONS_FIELD_MM draws them shorter (its steps are twice apart at 1:5–1:10: a 1.03 m
+# mechanism came out 103 mm at 1:10), the first μl is the step finer (207 mm at 1:5).
+LEAST_POSITIONS_MM = 120.0
 # A figure the scene's scale draws under this share of its usual field is told of: unreadable, but asked for.
 READABLE_SHARE = 0.1
 # Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
@@ -53,7 +65,8 @@ def paths_extent(analysis: Analysis) -> float:
 def length_scale(analysis: Analysis) -> float:
     """μl from the scene; or the standard value that fits the paths of all points into the field, and the
     plan of positions and each plan sheet's mechanism on an empty sheet of the scene's format (a larger
-    standard value where 200 mm do not fit), or a step or two larger where that lays the drawings on fewer
+    standard value where 200 mm do not fit; the step finer where the one that fits draws them under 120 mm,
+    :func:`positions_scale`), or a step or two larger where that lays the drawings on fewer
     sheets (:func:`graphplan.render.sheet.fewest_sheets_length_scale`).
 
     Choosing lays the sheets out at a few μl, once for each analysis; :func:`with_length_scale` fixes the
@@ -67,17 +80,25 @@ def length_scale(analysis: Analysis) -> float:
                                    f"drawing.length_scale = {format_scale(given)}", extent / given)
             raise SceneError("drawing.length_scale", f"draws the paths of the points {extent / given:.3g} mm across, "
                              f"more than any paper ({LARGEST_PAPER_MM:g} mm): give "
-                             f"{format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} (a {POSITIONS_FIELD_MM:g} mm "
-                             f"plan of positions), or leave it out for the program to choose", given)
+                             f"{format_scale(positions_scale(extent))} (a plan of positions "
+                             f"{extent / positions_scale(extent):.0f} mm across), or leave it out for the program to "
+                             "choose", given)
         return given
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
-        return fit_scale(extent, POSITIONS_FIELD_MM)
+        return positions_scale(extent)
     # The sheets build on this module's drawings: imported here, where they are laid out at each μl tried.
     from .sheet import fewest_sheets_length_scale
 
     return _chosen_scales.get(analysis, sheet, lambda: fewest_sheets_length_scale(
         analysis, sheet, largest_length_scale(analysis, sheet)))
+
+
+def positions_scale(extent: float) -> float:
+    """The standard μl that draws the paths of the points, ``extent`` m across, into the plan of positions' field
+    (:data:`POSITIONS_FIELD_MM`), or the step finer where that one draws them under :data:`LEAST_POSITIONS_MM`."""
+    scale = fit_scale(extent, POSITIONS_FIELD_MM)
+    return finer_standard_scale(scale) if extent / scale < LEAST_POSITIONS_MM else scale
 
 
 def refuse_unfit_length_scale(analysis: Analysis) -> None:
@@ -96,7 +117,7 @@ def largest_length_scale(analysis: Analysis, sheet: str) -> float:
     larger one at which the drawings at μl fit an empty ``sheet``: where the choice of μl starts."""
     # Found once: the sheets' refusal measures the drawings there before the choice starts from it.
     return _largest_scales.get(analysis, (sheet, POSITIONS_FIELD_MM), lambda: fitting_length_scale(
-        analysis, sheet, fit_scale(paths_extent(analysis), POSITIONS_FIELD_MM)))
+        analysis, sheet, positions_scale(paths_extent(analysis))))
 
 
 def refuse_beyond_paper(analysis: Analysis) -> None:
@@ -154,8 +175,8 @@ def below_reading(analysis: Analysis) -> list[str]:
         extent = paths_extent(analysis)
         if extent / drawing.length_scale < READABLE_SHARE * POSITIONS_FIELD_MM:
             told.append(f"drawing.length_scale: draws the paths of the points {extent / drawing.length_scale:.3g} mm "
-                        f"across, too small to read; {format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} draws a "
-                        f"{POSITIONS_FIELD_MM:g} mm plan of positions")
+                        f"across, too small to read; {format_scale(positions_scale(extent))} draws them "
+                        f"{extent / positions_scale(extent):.0f} mm across")
     # The velocity plans of every position drawn at velocity_plans_pole are judged apart, each at that pole (a plan
     # sheet's position among them holds its sheet's larger plan): the plan sheets' plans would hide a slip of the
     # key's unit.  Without that pole they are drawn at the program's own μV, which fills their field, and

@@ -47,6 +47,7 @@ from . import plans as plan_layout
 from . import positions as positions_layout
 from . import velocity_plans as velocity_plans_layout
 from .drawings import (
+    LEAST_POSITIONS_MM,
     at_length_scale,
     fitting_length_scale,
     force_sheet,
@@ -127,10 +128,6 @@ from .title_block import (
 )
 from .wrapping import fitted, joined
 
-# A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
-# this to save a sheet would run its outlines and position numbers together: μl is made no larger for fewer
-# sheets.  The first μl draws them about 200 mm across; a standard step smaller, 100 to 160.
-LEAST_POSITIONS_MM = 120.0
 # How far a centring mark reaches into the drawing area past the frame (ISO 5457, GB/T 14689).
 CENTRING_REACH_MM = 5.0
 # The kinematic diagrams are shortened for a small sheet in at most this many rounds, to no less of a field.
