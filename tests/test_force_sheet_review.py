@@ -186,3 +186,26 @@ def test_a_line_is_not_broken_after_a_short_name_and_its_colon():
     clause = "without friction 6.48 N·m: the rest"
     assert fitted(clause, text_width("without friction 6.48 N·m:", 2.5) + 1.0, 2.5) == [
         "without friction 6.48 N·m:", "the rest"]
+
+
+def test_an_unknowns_arm_between_points_named_in_words_is_an_h_with_its_length(tmp_path):
+    """Points named in words ran together into one: «−R45τ·ROCKERENDSLIDEPIN».  Two one-letter names name their
+    segment (R23τ·AB); a name of more letters makes the arm an h, its length given under the equation."""
+    from graphplan.starters import starter
+
+    def equations(text: str, folder: Path) -> list[str]:
+        folder.mkdir()
+        scene = folder / "scene.toml"
+        scene.write_text(text, encoding="utf-8")
+        assert main(["run", str(scene), "--only", "forces", "--sheet", "none", "--out", str(folder / "out")]) == 0
+        return [equation for path in sorted((folder / "out").glob("forces_*.svg"))
+                for _, _, caption in drawn_and_given(path).values()
+                for equation in re.findall(r"ΣM\w+\(3\): .*?R23τ = \S+ N(?:,\s+h = [\d.]+ mm)?", caption)]
+
+    text = starter("crank-rocker", "en")
+    lettered = equations(text, tmp_path / "letters")
+    assert lettered and all("R23τ·AB " in equation and "h = " not in equation for equation in lettered), lettered
+    worded = equations(text.replace('"B"', '"KNEE"'), tmp_path / "words")
+    assert len(worded) == len(lettered), worded
+    assert all("ΣMKNEE(3): " in equation and "R23τ·h " in equation and re.search(r",\s+h = [\d.]+ mm$", equation)
+               and "AKNEE" not in equation for equation in worded), worded

@@ -738,6 +738,12 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
     return items, anchors, lines
 
 
+def _one_letter(point: str) -> bool:
+    """Whether a point's name is a letter, with its link's number or a prime (B, B4, C′): two of them run together
+    name their segment (AB); two words (CRANKPIN, KNEE) run together are read as none, and the arm is an h."""
+    return re.fullmatch(r"[^\W\d_]\d*[′″]*", point) is not None
+
+
 def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, parts: list[str]) -> str:
     """The moment equation as the note writes it: ``ΣMB(3): R23τ·AB − G3·h1 + Fu3·h2 + Mu3 = 0,  R23τ = 26.13 N``.
 
@@ -782,7 +788,7 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
     # The arm is named by the segment from the centre to the joint only where it is that segment (a τ part square
     # to its link); an unknown at an angle to it (a guide's normal reaction about Assur's point) has an arm h.
     arm = "h"
-    if joint is not None and joint != equation.about:
+    if joint is not None and joint != equation.about and all(map(_one_letter, (joint, equation.about))):
         segment = abs(sheet.positions[joint] - sheet.positions[equation.about])
         if abs(segment - equation.arm) <= 1e-9 * segment:
             arm = "".join(sorted((joint, equation.about)))
