@@ -230,3 +230,20 @@ def test_the_gb_change_header_s_names_keep_a_value_s_padding_from_their_cell_s_l
         bottom, top = min(rows), max(rows)
         assert bottom[0] + bottom[1] / 2 + PADDING <= name.at[1] - 0.3 * name.size
         assert name.at[1] + 1.15 * name.size <= top[0] - top[1] / 2 - PADDING + 1e-9
+
+
+@pytest.mark.parametrize("title", ["三级杆组六杆机构（带滑块）运动与力分析", "牛头刨床「六杆机构」的运动分析与力分析，第二方案",
+                                   "曲柄摇杆机构（筛分机驱动）运动分析"])
+def test_a_chinese_title_breaks_no_line_after_an_opening_bracket_or_before_a_closing_one_or_a_stop(title):
+    """«三级杆组六杆机构（» over «带滑块）运动与力分析»: Chinese setting (禁则) ends no line on an opening bracket and
+    starts none with a closing one or a stop; any ideograph else may end a line.  Every break is checked, at each
+    number of lines a cell may give it."""
+    from graphplan.render.title_block import wrapped
+
+    for lines in (2, 3, 4):
+        broken = wrapped(title, lines, 5.0, "bold")
+        assert "".join(broken) == title
+        for line in broken[:-1]:
+            assert line[-1] not in "（「《", broken
+        for line in broken[1:]:
+            assert line[0] not in "）」》，。、；：", broken

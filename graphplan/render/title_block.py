@@ -539,8 +539,27 @@ _SPACES = re.compile(r"\s+")
 
 def _tokens(value: str, at_spaces: bool = False) -> list[tuple[str, bool]]:
     """Words and ideographs of ``value`` (words alone ``at_spaces``), each with whether a space stands before it; a
-    number after a word kept with it (:func:`_numbers_kept`)."""
-    return _numbers_kept(_split(value, at_spaces))
+    number after a word kept with it (:func:`_numbers_kept`), a bracket or a stop with what it holds on to
+    (:func:`_punctuation_held`)."""
+    return _punctuation_held(_numbers_kept(_split(value, at_spaces)))
+
+
+# Chinese (and Japanese) setting's rule of lines (禁则): no line ends on an opening bracket, none starts with a
+# closing one or a stop.  A title broke «三级杆组六杆机构（» over «带滑块）运动与力分析».
+_OPENING = frozenset("（「『《〈【〔“‘")
+_CLOSING = frozenset("）」』》〉】〕”’，。、；：！？")
+
+
+def _punctuation_held(tokens: list[tuple[str, bool]]) -> list[tuple[str, bool]]:
+    """``tokens`` with a wide opening bracket joined to the token after it and a wide closing bracket or stop to the
+    token before it (where no space stands between them), so that no line breaks at either."""
+    held: list[tuple[str, bool]] = []
+    for token, spaced in tokens:
+        if held and not spaced and (token[0] in _CLOSING or held[-1][0][-1] in _OPENING):
+            held[-1] = (held[-1][0] + token, held[-1][1])
+        else:
+            held.append((token, spaced))
+    return held
 
 
 def _numbers_kept(tokens: list[tuple[str, bool]]) -> list[tuple[str, bool]]:
