@@ -636,7 +636,7 @@ def _toml_hint(data: str, message: str) -> str:
         typed = line[column - 1:].split("#")[0].rstrip()
         return f'; a text is written in quotes: write {line[:column - 1]}"{typed}"'
     if letter and not letter.isascii():
-        return _key_hint(line, column)
+        return _key_hint(line, column, data)
     return ""
 
 
@@ -708,8 +708,9 @@ _DEGREE_SIGNS = "°º˚"
 _DASHES = "‐‑‒–—―−"
 
 
-def _key_hint(line: str, column: int) -> str:
-    """The hint for a bare key with a letter that is not ASCII: the Latin letter that looks the same (рb for pb),
+def _key_hint(line: str, column: int, data: str = "") -> str:
+    """The hint for a bare key with a letter that is not ASCII: quotes, where the scene names it so in quotes
+    elsewhere (a point О a Russian scheme names, as pivot = "О"); the Latin letter that looks the same (рb for pb),
     the English key a Russian word stands for (группы for groups), the number a numbered table takes."""
     start = column - 1
     while start > 0 and _in_key(line[start - 1]):
@@ -718,6 +719,10 @@ def _key_hint(line: str, column: int) -> str:
     while end < len(line) and _in_key(line[end]):
         end += 1
     word = line[start:end]
+    if word and f'"{word}"' in data:
+        # Told to type the Latin letter, the student renamed the point here and had every "О" elsewhere refused.
+        return (f"; a bare TOML key takes ASCII letters, digits, '-' and '_' alone, and the scene names {word!r} "
+                f'in quotes elsewhere: quote it here too, write {line[:start].lstrip()}"{word}"{line[end:].rstrip()}')
     looks = lookalike_plain(word)
     if looks != word and looks.isascii():
         return f"; {difference(word, looks)}"

@@ -1168,9 +1168,14 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
      "method's): TOML reads the ASCII '\"' where one belongs")),
     ("[scene]\ngravity = 9.81。\n", ("; '。' (U+3002) is a Chinese or Japanese input method's punctuation: TOML "
      "reads the ASCII '.' where one belongs")),
+    # A Russian scheme's point О, named so in quotes elsewhere: told to type the Latin O, the student renamed the
+    # point here and had every "О" elsewhere refused.
+    ('[frame]\nlink = 1\npoints = { О = [0.0, 0.0] }\n[driver]\npivot = "О"\n',
+     ("; a bare TOML key takes ASCII letters, digits, '-' and '_' alone, and the scene names 'О' in quotes "
+      'elsewhere: quote it here too, write points = { "О" = [0.0, 0.0] }')),
 ], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key", "russian-table-name", "russian-link-name",
         "russian-key", "degree-sign", "typographic-minus", "non-breaking-space", "full-width-equals", "full-width-comma",
-        "full-width-digits", "typographic-quote", "ideographic-full-stop"])
+        "full-width-digits", "typographic-quote", "ideographic-full-stop", "point-named-in-cyrillic"])
 def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
     stage, error = first_error(text)
     assert stage == "load" and str(error).startswith("<scene>: is not valid TOML: ") and str(error).endswith(hint)
