@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import io
+import math
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -814,7 +815,9 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
         # A date the block writes as the form writes dates (a TOML date; in ESKD's 10 mm column dd.mm.yy, also of a
         # dd.mm.yyyy typed as text) is not the user's to shorten.
         details = details_of(scene.project, scene.title, form)
-        told += [f"{table_of.get(name, 'project')}.{name}: the title block's box sets it at {size:.2g} mm to fit it "
+        # Written down to the hundredth: 1.797 mm written "1.8 mm" beside "no smaller than 1.8 mm" read as no slip.
+        told += [f"{table_of.get(name, 'project')}.{name}: the title block's box sets it at "
+                 f"{math.floor(size * 100.0) / 100.0:g} mm to fit it "
                  f"in (printed letters are no smaller than {SMALLEST_LETTERING:g} mm); shorten it{shorter.get(name, '')}"
                  for name, size in cramped(details, form, labels(scene.locale)).items()
                  if name != "date" or details.date == scene.project.date]

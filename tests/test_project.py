@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import datetime
+import math
 import re
 from pathlib import Path
 
@@ -142,7 +143,8 @@ def test_a_project_name_too_long_for_its_box_is_warned_of_by_check_and_run(tmp_p
                                f'date = "{long_date}"\n', encoding="utf-8")
     assert main(["check", str(scene)]) == 0
     said = "".join(capsys.readouterr())
-    assert f"project.author: the title block's box sets it at {expected:.2g} mm" in said
+    (told,) = re.findall(r"project\.author: the title block's box sets it at ([\d.]+) mm", said)
+    assert float(told) == pytest.approx(expected, abs=0.02)  # the estimate above, to its rounding down
     assert "project.date:" in said and "project.checked_by" not in said
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 0
     assert "project.author:" in "".join(capsys.readouterr())
@@ -191,7 +193,8 @@ def test_a_title_too_long_for_its_box_is_warned_of_as_a_project_name_is(tmp_path
     assert max(sizes) < SMALLEST_LETTERING
     assert main(["check", str(scene)]) == 0
     said = "".join(capsys.readouterr())
-    assert f"scene.title: the title block's box sets it at {min(sizes):.2g} mm to fit it in" in said
+    assert f"scene.title: the title block's box sets it at {math.floor(min(sizes) * 100) / 100:g} mm to fit it in" \
+        in said
     assert "project." not in said
     assert main(["check", str(ROOT / "fixtures" / "ratchet_crank_rocker.toml")]) == 0
     assert "scene.title" not in "".join(capsys.readouterr())
@@ -229,3 +232,22 @@ def test_a_chinese_title_broken_as_evenly_either_way_puts_the_shorter_line_first
     # A Latin title, and one broken at its spaces, fill their first line as before.
     assert [item.text for item in fitted("Crank-rocker of a ratchet feed", (0.0, 0.0, 40.0, 18.0), 4.0,
                                          lines=2)] == ["Crank-rocker of", "a ratchet feed"]
+
+
+def test_a_name_set_just_under_the_smallest_lettering_is_not_told_it_is_set_at_it(tmp_path, capsys):
+    """«checked_by: the title block's box sets it at 1.8 mm to fit it in (printed letters are no smaller than
+    1.8 mm)»: 1.79 mm rounded to two digits read as no slip at all.  The size is written down to the hundredth."""
+    from graphplan.cli import main
+    from graphplan.render.title_block import SMALLEST_LETTERING
+
+    text = RATCHET.replace("[frame]", '[project]\nchecked_by = "Prof. B. Teacher"\n\n[frame]', 1)
+    assert "Prof. B. Teacher" in text
+    sizes = {item.size for item in course_sheets(analyse(graphplan.load_text(text)))[0].layers
+             for item in getattr(item, "items", []) if isinstance(item, Text) and "Teacher" in item.text}
+    assert sizes and round(min(sizes), 1) == SMALLEST_LETTERING > min(sizes)
+    scene = tmp_path / "teacher.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    said = "".join(capsys.readouterr())
+    assert f"project.checked_by: the title block's box sets it at {math.floor(min(sizes) * 100) / 100:g} mm" in said
+    assert "sets it at 1.8 mm" not in said
