@@ -92,3 +92,19 @@ def test_a_label_none_of_whose_spots_meets_an_obstacle_stands_beside_its_point()
     (text,) = placement.texts
     assert placement.leaders == ()
     assert text_box(text).distance(Point(0.0, 0.0)) <= LABEL_GAP_MM + 1e-9
+
+
+def test_a_leader_from_a_point_along_the_line_it_names_starts_on_that_line():
+    """A load's name led from a point of its arrow's shaft started 0.9 mm off the shaft, as a leader keeps off a
+    point's dot, and touched nothing: it now starts on the shaft.  One from the anchor's own point (a load's tail,
+    a joint) and one of a label naming a point keep their clearance."""
+    from graphplan.render.labels import LEADER_CLEARANCE, _from_its_line
+
+    shaft = ((0.0, 0.0), (20.0, 0.0))
+    named = Anchor((0.0, 0.0), "Fu4", 2.8, along=shaft)
+    from_shaft = LineString([(12.0, LEADER_CLEARANCE), (12.0, 6.0)])
+    (start, end) = _from_its_line(from_shaft, named)
+    assert Point(start).distance(LineString(shaft)) < 1e-12 and start == (12.0, 0.0) and end == (12.0, 6.0)
+    from_tail = LineString([(0.0, LEADER_CLEARANCE), (0.0, 6.0)])
+    assert _from_its_line(from_tail, named) == tuple(from_tail.coords)
+    assert _from_its_line(from_shaft, Anchor((12.0, 0.0), "B", 2.8)) == tuple(from_shaft.coords)

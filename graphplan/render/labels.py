@@ -972,9 +972,26 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     order = _most_crowded_first(anchors, at)
     where: dict[int, tuple[str, int, float, float, bool]] = {}
     letter()
-    leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
+    leaders = tuple(Polyline(_from_its_line(leader_lines[k], anchors[k]), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
     return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
+
+
+def _from_its_line(leader: BaseGeometry, anchor: Anchor) -> tuple[tuple[float, float], ...]:
+    """``leader``'s points, run back onto the line its anchor names where it starts from a point along that line
+    (:func:`_slide_points`): started :data:`LEADER_CLEARANCE` off it, as off a point's dot, a load's name led from
+    its arrow's shaft stood a millimetre from the arrow, its leader touching nothing."""
+    points = tuple(leader.coords)
+    if anchor.along is None:
+        return points
+    line = shapely.LineString(anchor.along)
+    start = shapely.Point(points[0])
+    # From the anchor's own point (a joint's dot, a load's tail) the leader keeps clear of it.
+    if start.distance(shapely.Point(anchor.at)) <= LEADER_CLEARANCE + 1e-6 or \
+            start.distance(line) > LEADER_CLEARANCE + 1e-6:
+        return points
+    foot = line.interpolate(line.project(start))
+    return ((foot.x, foot.y), *points[1:])
 
 
 # How many placements :func:`remembered` keeps, the least recently asked given up first: a test module draws the same
