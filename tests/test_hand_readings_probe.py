@@ -8,6 +8,7 @@ test from the scene's scales and the exact solution, never taken from a warning'
 
 import dataclasses
 import math
+import re
 
 import pytest
 
@@ -204,3 +205,20 @@ def test_two_segments_of_the_acceleration_plan_swapped_are_asked_as_swapped():
     assert f"ab = {round(pb, 1):g} mm is the acceleration plan's pb ({pb:.2f} mm as constructed)" in detail, detail
     assert detail.endswith("segments taken for one another?"), detail
     assert "Segments taken for one another?" in table and "read off the other plan" not in table, table
+
+
+def test_a_chinese_error_table_sets_its_readings_and_caveats_close():
+    """Said in Chinese, two readings typed in centimetres were joined with a Latin «; », and a caveat was joined on
+    with a Latin space after the full stop («）。 但»)."""
+    lengths = _velocity_plan_lengths()
+    readings = {name: round(value, 1) for name, value in lengths.items()}
+    readings["ps3"], readings["ab"] = round(lengths["ps3"] / 10.0, 2), round(lengths["ab"] / 10.0, 2)
+    _, table = _far_off({"velocity": readings}, "zh")
+    (said,) = [line for line in table.splitlines() if "长度是否按厘米输入" in line]
+    assert "；" in said and "; " not in said, said
+    readings = {3: {name: round(value, 2) for name, value in _velocity_plan_lengths(3).items()},
+                10: {name: round(value / 10.0, 2) for name, value in _velocity_plan_lengths(10).items()}}
+    scene = dataclasses.replace(graphplan.load(FIXTURE), locale="zh",
+                                measured={number: {"velocity": velocity} for number, velocity in readings.items()})
+    lines = [line for line in markdown(analyse(scene)).splitlines() if "velocity_pole" in line]
+    assert lines and not any(re.search(r"[。，；：）] ", line) for line in lines), lines

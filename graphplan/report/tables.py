@@ -186,20 +186,20 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
     for typed, readings in (("metres", found.metres), ("centimetres", found.centimetres)):
         if readings:
-            lines.append(text[f"errors_readings_{typed}"].format(readings="; ".join(
+            lines.append(text[f"errors_readings_{typed}"].format(readings=text["semicolon"].join(
                 text["errors_reading_against"].format(reading=_written(reading, text, mark),
                                                       millimetres=f"{constructed:.4g}".replace(".", mark))
                 for reading, (_, constructed) in readings.items())))
     if found.values:
         units = {"velocity": text["unit_m_per_s"], "acceleration": text["unit_m_per_s2"], "forces": text["newton"]}
-        lines.append(text["errors_readings_values"].format(readings="; ".join(
+        lines.append(text["errors_readings_values"].format(readings=text["semicolon"].join(
             text["errors_reading_value"].format(
                 reading=_written(reading, text, mark), symbol=quantity_symbol(quantity, text),
                 value=f"{value:.4g}".replace(".", mark), unit=units[value_kind(quantity)],
                 millimetres=f"{constructed:.4g}".replace(".", mark))
             for reading, (quantity, value, constructed) in found.values.items())))
     if found.force_scale:
-        lines.append(text["errors_force_scale"].format(readings="; ".join(
+        lines.append(text["errors_force_scale"].format(readings=text["semicolon"].join(
             text["errors_force_scale_item"].format(
                 reading=_written(reading, text, mark), name=reading.split(" = ")[0],
                 scale=f"{scale:g}".replace(".", mark), millimetres=f"{length:.2f}".replace(".", mark))
@@ -209,7 +209,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         # Readings of the other plan typed under this one's table: named, with the other plan's segments they are.
         lines.append(text[f"errors_other_plan_{other}"].format(segments=", ".join(names), precision=precision))
     if found.named and elsewhere is None:  # as the console: another position's readings explain every one
-        items = "; ".join(text["errors_or"].join(
+        items = text["semicolon"].join(text["errors_or"].join(
             text[f"errors_segment_{segment.plan}"].format(
                 reading=_written(reading, text, mark), segment=segment.name,
                 millimetres=f"{segment.millimetres:.2f}".replace(".", mark))
@@ -218,7 +218,8 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         lines.append(text["errors_named"].format(
             precision=precision, readings=items,
             question=text["errors_named_other" if other else "errors_named_swapped"]))
-    return lines
+    # Chinese sets its sentences close: a caveat joined on with a Latin space stood as «）。 但».
+    return [set_close(line) for line in lines] if analysis.scene.locale == "zh" else lines
 
 
 def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[VelocityPosition, ...],
