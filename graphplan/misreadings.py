@@ -72,6 +72,8 @@ class Rescaled:
     # stands in place of (a scene gives a plan's pole or its scale, not both), if any.
     unit_setting: str = ""
     replaces: str | None = None
+    # The one reading (as the scene writes it) the others agree without: misread besides, as one of four or more.
+    but: tuple[str, ...] = ()
 
     @property
     def ratio(self) -> float:
@@ -247,6 +249,13 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
         if drawn_at is not None:
             rescaled.append(_rescaled(kind, polygon, read, drawn_at, position, drawing, joint))
             far = [(row, plan) for row, plan in far if not any(row is each for each, _ in rows)]
+        elif kind in _SCALES and (odd := _one_scale_but_one(read)) is not None:
+            # A plan drawn at another pole with one segment misread besides: the scale is told, and the one reading.
+            drawn_at, left_out = odd
+            kept = [(row, plan, scale) for row, plan, scale in read if row.reading != left_out]
+            rescaled.append(replace(_rescaled(kind, polygon, kept, drawn_at, position, drawing, joint),
+                                    but=(left_out,)))
+            far = [(row, plan) for row, plan in far if not any(row is each for each, _, _ in kept)]
     if not rescaled and not far and on_sheet is None:
         return None
     misread: dict[str, list[tuple[ErrorRow, float]]] = {}
@@ -536,6 +545,27 @@ def _one_scale(read: list[tuple[ErrorRow, float, float]]) -> float | None:
     return drawn_at if any(abs(scale / drawn_at - 1.0) > tolerance for _, scale in implied.values()) else None
 
 
+# The fewest readings of a plan that, all but one agreeing at one scale, tell the scale and the one misread.
+_FEWEST_BUT_ONE = 4
+
+
+def _one_scale_but_one(read: list[tuple[ErrorRow, float, float]]) -> tuple[float, str] | None:
+    """The scale all readings of a plan but one agree at (:func:`_one_scale`), with that one reading as the scene
+    writes it, where the plan has :data:`_FEWEST_BUT_ONE` readings or more and one alone leaves the rest agreeing,
+    at a scale no unit explains (a plan typed in centimetres or in its values is told whole); None otherwise.  A
+    plan drawn at pa = 120 mm with ps4 given pb's length was told four lengths misread, and no scale."""
+    readings = list(dict.fromkeys(row.reading for row, _, _ in read))
+    if len(readings) < _FEWEST_BUT_ONE:
+        return None
+    found = [(drawn_at, odd) for odd in readings
+             if (drawn_at := _one_scale([each for each in read if each[0].reading != odd])) is not None]
+    if len(found) != 1:
+        return None
+    drawn_at, odd = found[0]
+    read_at = read[0][2]
+    return None if typed_unit(read_at / drawn_at) is not None or in_units(drawn_at) else (drawn_at, odd)
+
+
 def _uniform_scale(read: list[tuple[ErrorRow, float, float]], precision: float) -> float | None:
     """The scale a plan was drawn at whose readings, none far off, all stand in one ratio to the construction: each
     within the drafting ``precision`` (mm) of that ratio times its constructed length, the ratio off 1 by more than
@@ -779,9 +809,10 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
             # value near it, with how close the readings come there (the student's own errors stay).
             fit = f", {rescaled.key.removeprefix('drawing.')} ≈ {rescaled.setting:.4g} mm" if rescaled.key.endswith(
                 "_pole") else ""
-            details.append(f"every reading of the {kind} plan is {rescaled.ratio:.4g} times the plan as constructed at "
-                           f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
-                           f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
+            but = f" but {', '.join(map(_name, rescaled.but))}" if rescaled.but else ""
+            details.append(f"every reading of the {kind} plan{but} is {rescaled.ratio:.4g} times the plan as "
+                           f"constructed at {symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
+                           f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading{but} is "
                            f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)"
                            f"{_shared_caveat(rescaled, position, drawn, drawing, joint, sheets)}")
         for (unit, share, factor), readings in ((_TYPED_UNITS[0], found.metres), (_TYPED_UNITS[1], found.centimetres)):

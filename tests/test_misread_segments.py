@@ -106,3 +106,24 @@ def test_a_tangential_component_typed_as_its_value_is_told_so():
     assert "a length misread" not in detail
     assert f"n3b = {typed:g} мм — это aBAτ = {typed:.4g} м/с²".replace(".", ",") in markdown(
         analyse(dataclasses.replace(analysis.scene, locale="ru")))
+
+
+def test_a_plan_drawn_at_another_pole_with_one_segment_misread_is_told_both():
+    """Drawn at pa = 120 mm for the fixture's 150 with ps3 given pb's length: the four readings agreed at no one
+    scale, and the student was told four lengths misread, no word of the pole.  The three that agree give the pole;
+    the fourth is told misread."""
+    velocity = _lengths("velocity", ("pb", "ab", "pe", "ps3"))
+    drawn = {name: round(value * 120.0 / 150.0, 2) for name, value in velocity.items()}
+    drawn["ps3"] = drawn["pb"]
+    detail, table = _far_off({"velocity": drawn})
+    assert "every reading of the velocity plan but ps3 is 0.8" in detail, detail
+    assert "give `[drawing] velocity_pole = 120`" in detail and "every reading but ps3 is within" in detail
+    # The fourth told apart, as misread (here by chance another segment's length, which it is named).
+    assert f"ps3 = {drawn['ps3']:g} mm" in detail.split("velocity_pole = 120`")[1]
+    assert "Every reading of the velocity plan but ps3 is 0.8" in table, table
+    _, russian = _far_off({"velocity": drawn}, "ru")
+    assert "Все замеры на плане (план скоростей), кроме ps3, отличаются" in russian, russian
+    # Three readings, one off: too few to tell a scale from one misreading.
+    three = {name: drawn[name] for name in ("pb", "ab", "ps3")}
+    detail, _ = _far_off({"velocity": three})
+    assert "but ps3" not in detail and "velocity_pole" not in detail, detail

@@ -166,8 +166,10 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             lines.append(text["errors_in_units"].format(plan=text[f"{kind}_plan_title"].lower(), symbol=symbol,
                                                         unit=unit, setting=rescaled.unit_setting + instead))
             continue
+        but = text["errors_rescaled_but"].format(names=text["enumeration"].join(
+            reading.split(" = ")[0] for reading in rescaled.but)) if rescaled.but else ""
         lines.append(text["errors_rescaled"].format(
-            plan=text[f"{kind}_plan_title"].lower(), ratio=number(rescaled.ratio, 4, mark), symbol=symbol,
+            plan=text[f"{kind}_plan_title"].lower(), ratio=number(rescaled.ratio, 4, mark), symbol=symbol, but=but,
             scale=scale_factor(plan.plans[kind].scale).replace(".", mark), unit=unit,
             drawn=scale_factor(drawn_at).replace(".", mark), setting=setting(rescaled),
             off=f"{rescaled.off * 100.0:.1f}".replace(".", mark),
