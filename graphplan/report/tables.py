@@ -481,15 +481,16 @@ def velocity_plans_lines(analysis: Analysis, mark: str = ".") -> list[str]:
 
 
 def _largest(table: dict[str, dict[str, ErrorRow]], source: str, mark: str, text: Mapping[str, str]) -> str:
-    """A position's largest error of ``source`` in magnitude, of those that have a value; a reading of a quantity
+    """A position's largest error of ``source`` in magnitude, signed, of those that have a value; a reading of a quantity
     that vanishes there has none (its δ is written —) and is named beside it, so that it hides no finite
     error (``0.268 (VE: —)``).  A position not measured by hand has no measured error: empty, not 0."""
-    errors = {quantity: abs(rows[source].percent) for quantity, rows in table.items() if source in rows}
+    errors = {quantity: rows[source].percent for quantity, rows in table.items() if source in rows}
     finite = [value for value in errors.values() if math.isfinite(value)]
     undefined = [quantity_symbol(quantity, text) for quantity, value in errors.items() if not math.isfinite(value)]
     if not finite:
         return _percent(math.inf, mark) if undefined else ""
-    return _percent(max(finite), mark) + (f" ({', '.join(undefined)}: —)" if undefined else "")
+    # Signed, as the position's own table writes its largest (−3.446 there, 3.446 here read as another value).
+    return _percent(max(finite, key=abs), mark) + (f" ({', '.join(undefined)}: —)" if undefined else "")
 
 
 def csv_text(analysis: Analysis) -> str:
