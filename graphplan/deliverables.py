@@ -385,7 +385,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             laid_out = _drawn_alone(panels, f"plan-{plan.number}") if len(shown) == 2 else None
             if laid_out is None:
                 sheet = dataclasses.replace(draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration),
-                                            drawings=("mechanism", *shown))
+                                            drawings=("mechanism", *shown), title=draw.plan_sheet_title(
+                                                strings(analysis.scene.locale), shown, plan.number))
                 layers = plan_layout.layout(sheet)
             else:
                 layers = list(laid_out.layers)
@@ -595,8 +596,10 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
+        shown = tuple(name for name in ("velocity", "acceleration") if name in pieces)
         files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales, shown_in_parts,
-                                         sheet_levers, tells_diagrams(scene, analysis, pieces))
+                                         sheet_levers, tells_diagrams(scene, analysis, pieces),
+                                         plans_shown=shown or ("velocity", "acceleration"))
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
         files["note.tex"] = latex_document(files["note.md"], scene.title, locale, verbatim)
     if analysis is None:

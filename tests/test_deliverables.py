@@ -784,3 +784,20 @@ def test_what_a_machine_without_load_diagrams_needs_is_told_without_an_analysis(
     for piece in ("dynamics", "note", "sheets", "velocity"):
         # None stands for no linkage: what the linkage's pieces need, and the machine's with them.
         assert missing(machine, None, piece).startswith("needs a mechanism"), piece
+
+
+@pytest.mark.parametrize(("only", "title"), [("velocity", "Velocity plan, position 5"),
+                                             ("acceleration", "Acceleration plan, position 5"),
+                                             ("velocity,acceleration", "Velocity and acceleration plans, position 5")])
+def test_a_plan_sheet_is_titled_by_the_plans_it_holds(tmp_path, only, title):
+    """Under --only velocity the plan sheet, and the note's figure of it, read "Velocity and acceleration plans,
+    position 5" over a sheet with no acceleration plan."""
+    scene = tmp_path / "ratchet.toml"
+    scene.write_text(RATCHET.read_text(encoding="utf-8").replace('locale  = "ru"', 'locale  = "en"'), encoding="utf-8")
+    code, out = run(tmp_path, "--only", f"{only},note", scene=scene)
+    assert code == 0
+    titles = ["".join(text.itertext()) for text in ElementTree.parse(out / "plan_5.svg").getroot().iter(
+        "{http://www.w3.org/2000/svg}text")]
+    assert title in titles, titles
+    assert not [text for text in titles if "plan" in text.lower() and "position 5" in text and text != title]
+    assert f"Figure 1. {title}" in (out / "note.md").read_text(encoding="utf-8")

@@ -423,6 +423,13 @@ def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, accel
     return _svg(analysis, plans.layout(plan_sheet(analysis, index, velocity, acceleration)))
 
 
+def plan_sheet_title(text: Mapping[str, str], shown: tuple[str, ...], number: int) -> str:
+    """The title of a position's plan sheet holding the plans ``shown``: both, or the one drawn (under --only
+    velocity, "Velocity and acceleration plans" stood over a sheet with no acceleration plan)."""
+    key = "plan_sheet_title" if len(shown) == 2 else f"{shown[0]}_plan_caption"
+    return text[key].format(number=number)
+
+
 def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
                acceleration: Plan | None = None) -> plans.PlanSheet:
     """What the plan sheet of the position at ``index`` (an index into the analysed positions) shows.

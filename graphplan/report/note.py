@@ -46,7 +46,7 @@ from ..kinematics import at, cross
 from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M, crank_pin_too_fast, length_slip
 from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
-from ..render.drawings import dimensioned_travels, length_scale
+from ..render.drawings import dimensioned_travels, length_scale, plan_sheet_title
 from ..render.plans import ZERO_MM, too_short_to_draw_mm
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
@@ -83,7 +83,7 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
                   figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None,
                   shown_in_parts: Mapping[str, Sequence[str]] | None = None,
                   sheet_levers: Mapping[str, tuple[int, float]] | None = None,
-                  tells_diagrams: bool | None = None) -> str:
+                  tells_diagrams: bool | None = None, plans_shown: tuple[str, ...] = ("velocity", "acceleration")) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.machine_dynamics.MachineDynamics`) adds the section on the
@@ -98,6 +98,7 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     after the lever's table where it is not the μV the note works it at.  ``tells_diagrams`` whether it has the
     kinematic diagrams' section (their method and scales, and the figure where ``figures`` has diagrams.svg); by
     default where a run of the scene draws them, so that the note is the one ``--only note`` writes.
+    ``plans_shown`` the plans each plan sheet's figure holds (``--only velocity`` draws the velocity plan alone).
     """
     if tells_diagrams is None:
         from ..deliverables import tells_diagrams as told_by_run
@@ -105,7 +106,8 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
         tells_diagrams = told_by_run(scene if analysis is None else analysis.scene, analysis)
     note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures), tells_diagrams=tells_diagrams,
                  lever_scales=dict(lever_scales or {}), sheet_levers=dict(sheet_levers or {}),
-                 shown_in_parts={name: tuple(shown) for name, shown in (shown_in_parts or {}).items()})
+                 shown_in_parts={name: tuple(shown) for name, shown in (shown_in_parts or {}).items()},
+                 plans_shown=plans_shown)
     note.write()
     return raised("\n".join(note.lines).rstrip("\n") + "\n")
 
@@ -184,6 +186,8 @@ class _Note:
     sheet_levers: Mapping[str, tuple[int, float]] = field(default_factory=dict)
     # The headings of the diagrams each part of a figure shows (``dynamics-2.svg``), named in its caption.
     shown_in_parts: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    # The plans a plan sheet's figure holds: both, or the one a run asked for alone.
+    plans_shown: tuple[str, ...] = ("velocity", "acceleration")
     # The symbols a sentence has said what they are (A4, lCA4), each defined once, where it is first used.
     defined: set[str] = field(default_factory=set)
     # What the sections found, as they wrote it, for the conclusions to sum up in the same numbers.
@@ -857,7 +861,7 @@ class _Note:
         self.plan_section(plan, plan.acceleration)
         for kind in ("velocity", "acceleration"):
             self.values_table(plan, kind)
-        self.figure(f"plan_{plan.number}.svg", self.t("plan_sheet_title", number=plan.number))
+        self.figure(f"plan_{plan.number}.svg", plan_sheet_title(self.text, self.plans_shown, plan.number))
 
     def plan_section(self, pp: PlanPosition, plan: Plan) -> None:
         kind = plan.kind
