@@ -115,7 +115,7 @@ def test_the_reduction_is_written_with_the_driving_link_s_own_speed(english):
     note, results = english
     text = section(note, "Dynamics of the machine")
     assert results["dynamics"]["driver_link"] == 2
-    assert "Je = Σ[m·(vS/ω2)² + JS·(ω/ω2)²]" in text and "Me = Σ[F·v·cos α ± M·ω]/ω2" in text and "ω1" not in text
+    assert "Je = Σ[m·(vS/ω2)² + JS·(ω/ω2)²]" in text and "Me = Σ[F·v·cos α ± M·ω]/|ω2|" in text and "ω1" not in text
 
 
 def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_path, with_dynamics):

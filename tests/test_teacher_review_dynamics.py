@@ -4,7 +4,7 @@ Nothing here calls graphplan's solvers: the shaper's and the slider-driven lever
 numpy (the lever's pivot on the crank circle's tangent, the RRR's two circles), their velocity ratios taken as
 central differences of those positions, and the reduction, the works, ΔWmax and the flywheel are the textbook's:
 
-* Je = Σ[m·(vS/ω1)² + JS·(ω/ω1)²] keeps the links' kinetic energy, Me = Σ[F·v·cos α ± M·ω]/ω1 their power
+* Je = Σ[m·(vS/ω1)² + JS·(ω/ω1)²] keeps the links' kinetic energy, Me = Σ[F·v·cos α ± M·ω]/|ω1| their power
   (I. I. Artobolevsky, *Theory of Mechanisms and Machines*, the dynamics of machines: reduction of masses and
   forces; for a slider driver the reduced mass and force, me = Σ[m·(vS/v1)² + JS·(ω/v1)²]);
 * ΔT = Ad − Ar over the cycle with the driving moment taken constant (Md = Ar/2π), ΔWmax its range and the
@@ -439,7 +439,7 @@ def test_the_levers_reduced_mass_and_force_are_my_own_over_the_travel(lever):
 
 def test_the_levers_note_gives_my_reduced_mass_and_force_at_its_plan_positions(lever):
     text = _section(lever["note"], "Dynamics of the machine")
-    assert "me = Σ[m·(vS/v2)² + JS·(ω/v2)²]" in text and "Fe = Σ[F·v·cos α ± M·ω]/v2" in text
+    assert "me = Σ[m·(vS/v2)² + JS·(ω/v2)²]" in text and "Fe = Σ[F·v·cos α ± M·ω]/|v2|" in text
     rows = re.findall(r"^\| (\d+) \| " + NUMBER + r" \| " + NUMBER + r" \| " + NUMBER + r" \| " + NUMBER + r" \| "
                       + NUMBER + r" \| " + NUMBER + r" \|", text, flags=re.MULTILINE)
     assert [int(row[0]) for row in rows] == [3, 9]
