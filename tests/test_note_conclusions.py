@@ -105,6 +105,22 @@ def error_tables(before: str, locale: str) -> dict[int, list[dict[str, str]]]:
     return tables
 
 
+def grid_largest(before: str, locale: str, source: str) -> list[tuple[str, int]]:
+    """The table of every position's velocity plans: each position's largest δ of ``source``, as written, with the
+    position's number (its column's head)."""
+    text = words(locale)
+    name = text["velocity_plans_largest"].format(source=text[f"source_{source}"])
+    found, heads = [], []
+    for line in before.splitlines():
+        cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
+        if cells[:2] == [text["errors_quantity"], text["column_unit"]]:
+            # The grid's head numbers its positions; an error table's names its columns.
+            heads = [int(cell) for cell in cells[2:]] if all(cell.isdigit() for cell in cells[2:]) else []
+        elif cells[0] == name and heads:
+            found += [(cell, number) for cell, number in zip(cells[2:], heads, strict=True) if cell]
+    return found
+
+
 def table_lines(lines: list[str]) -> list[str]:
     """The Markdown table's lines at the head of ``lines``."""
     out = []
@@ -148,11 +164,15 @@ def test_conclusions_repeat_what_the_note_found(run, name, locale):
             deltas = [(abs(number(row[column])), row[column], row[text["errors_quantity"]], position)
                       for position, rows in tables.items() for row in rows
                       if row[text["column_unit"]] in units and row.get(column, "—") not in ("", "—")]
-            largest = max(deltas)
+            # The velocities' over the velocity plans of every position too, whose table names no quantity.
+            grid = grid_largest(before, locale, source) if key == "note_conclusion_velocity_errors" else []
+            largest = max([*deltas, *((abs(number(written)), written, None, position) for written, position in grid)],
+                          key=lambda delta: delta[0])
             named = re.fullmatch(pattern(text["note_conclusion_error_of"]), part)
             if named:
                 assert (named.group("percent"), named.group("quantity"), int(named.group("number"))) in {
-                    (written, quantity, position) for size, written, quantity, position in deltas}
+                    (written, quantity, position) for size, written, quantity, position in deltas} or (
+                    named.group("percent"), int(named.group("number"))) in set(grid)
                 assert abs(number(named.group("percent"))) == largest[0]
             else:
                 plain = re.fullmatch(pattern(text["note_conclusion_error"]), part)

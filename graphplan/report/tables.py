@@ -89,9 +89,11 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
 def largest_errors(analysis: Analysis, accelerations: bool, mark: str = ".") -> list[tuple[str, str, str, int]]:
     """For each source of the plan positions' error tables, the largest error in magnitude of the velocities (or of
     the ``accelerations``) over every position, as its table writes it: (source, δ, the quantity's symbol, the
-    position), for the note's conclusions; no symbol where it rounds to 0.000, as :func:`_worst` names none."""
+    position), for the note's conclusions; no symbol where it rounds to 0.000, as :func:`_worst` names none.  The
+    velocities' are over the velocity plans of every position too: a conclusion of 0.538 % stood under their
+    table's 13.843 %."""
     found: dict[str, tuple[float, str, str, int]] = {}
-    for plan in analysis.plans:
+    for plan in analysis.plans if accelerations else (*analysis.plans, *analysis.velocity_plans):
         for row in plan.errors:
             if is_reaction(row.quantity) or is_balancing(row.quantity) or not math.isfinite(row.percent):
                 continue
