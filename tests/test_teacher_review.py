@@ -238,3 +238,25 @@ def test_a_displaced_inertia_force_is_told_alike_in_every_language(tmp_path, loc
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     # The lever's table names them as the note's words do: the Russian Fи4 and hи4.
     assert told in note and ("| Fи4 | s4 + ω4·hи4 |" if locale == "ru" else "| Fu4 | s4 + ω4·hu4 |") in note
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_note_says_the_sense_an_unknown_is_first_assumed_in(shaper, locale):
+    """«R34 = −3191.7 N (the minus sign: R34 acts against the sense first assumed)», and the sense first assumed was
+    said nowhere.  The note says once how its moment equations are signed: an unknown enters with the sign of its
+    moment in that sense, so that a reader finds it from the equation; each value said to be turned round is
+    negative."""
+    from graphplan.locale import strings
+
+    _, note, _ = shaper(locale)
+    text = strings(locale)
+    said = {"en": "each unknown enters with the sign of its moment in the sense first assumed for it",
+            "ru": "каждая неизвестная входит в уравнение со знаком своего момента",
+            "zh": "各未知力按其初设方向所产生力矩的符号列入方程"}[locale]
+    assert said in note
+    reversed_mark = text["note_sense_reversed"].split("{name}")[0]
+    lines = [line for line in note.splitlines() if reversed_mark in line and "⇒" in line]
+    assert lines
+    for line in lines:
+        solved = line.split("⇒")[1].split(reversed_mark)[0]
+        assert re.search(r"= −[\d.,]+ \S+\s*$", solved.strip()), line
