@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import difflib
 import os
 from dataclasses import dataclass
 from functools import cached_property
@@ -73,6 +74,16 @@ class Drawing:
         return path
 
 
+class _Values(dict):
+    """The values read off a position's plans, by name: a name it has not is told with the names it has and the
+    nearest, as the scene's keys are (``values["omega_4"]`` gave a bare KeyError('omega_4'))."""
+
+    def __missing__(self, key: object) -> float:
+        near = difflib.get_close_matches(str(key), list(self), n=1)
+        hint = f"; did you mean {near[0]!r}?" if near else ""
+        raise KeyError(f"{key!r} is no value of the plans, which give {', '.join(self)}{hint}")
+
+
 @dataclass(frozen=True)
 class PositionPlans:
     """The plans of one position: the records, the values read off them, the drawings."""
@@ -102,12 +113,12 @@ class PositionPlans:
         return self.position.acceleration
 
     @property
-    def values(self) -> dict[str, float]:
+    def values(self) -> _Values:
         """Every quantity read off the plans as constructed, SI, keyed as the error table names them: ``VB``,
         ``aB`` (magnitudes, m/s and m/s²), ``omega3``, ``epsilon4`` (rad/s and rad/s², signed, counter-clockwise
         positive), and the sliding pairs' relative velocity (``VA4A3``) and relative acceleration along the guide
         (``aA4A3^r``); ``aA4A3`` without ``^r`` is the whole of aA4 − aA3, the Coriolis term 2·ω4·VA4A3 in it."""
-        return {reading.quantity: reading.value(self.position.plans) for reading in self.position.readings}
+        return _Values({reading.quantity: reading.value(self.position.plans) for reading in self.position.readings})
 
     @property
     def errors(self) -> tuple[ErrorRow, ...]:

@@ -248,3 +248,17 @@ planes = [0.0, 0.2]
 """).balance()
     assert [plane.angle_deg for plane in rotor.planes] == [None, None]
     assert repr(rotor).count(" kg·m at —") == 2
+
+
+def test_a_value_the_plans_do_not_give_is_told_with_those_they_do(scene):
+    """five.values["omega_4"] gave a bare KeyError('omega_4'); the scene's keys are told with the names they may
+    be and the nearest."""
+    values = scene.plan(5).values
+    assert values["omega4"] == dict(values)["omega4"]
+    with pytest.raises(KeyError) as missing:
+        values["omega_4"]
+    told = missing.value.args[0]
+    assert told.startswith("'omega_4' is no value of the plans, which give ") and told.endswith(
+        "; did you mean 'omega4'?")
+    assert all(name in told for name in values)
+    assert values.get("omega_4") is None and "omega_4" not in values
