@@ -13,6 +13,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from .loads import motion_state, spring_length
 from .mechanism import Mechanism
 from .motion import Motion, PositionWarning
 from .render.numerals import number as written
@@ -341,12 +342,11 @@ def free_lengths_in_millimetres(mechanism: Mechanism, motion: Motion) -> tuple[P
     """A ``free-length-in-mm`` warning, at the first position, naming each spring shorter at every position than
     :data:`SOLID_SHARE` of its ``free_length``, with the free length it would be in millimetres where that one
     leaves the spring longer than its solid length somewhere."""
+    springs = [spec for spec in mechanism.scene.loads if spec.spring]
+    state = motion_state(motion) if springs else None
     told = []
-    for spec in mechanism.scene.loads:
-        if not spec.spring:
-            continue
-        reach = np.asarray(motion.point(spec.point).r, dtype=float) - np.asarray(motion.point(spec.along).r, dtype=float)
-        lengths = np.hypot(*reach.T)
+    for spec in springs:
+        lengths = np.atleast_1d(spring_length(spec, state))
         longest = _largest(lengths)
         if longest is None or not longest < SOLID_SHARE * spec.free_length:
             continue

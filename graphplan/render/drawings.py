@@ -78,11 +78,11 @@ def length_scale(analysis: Analysis) -> float:
         if extent / given > LARGEST_PAPER_MM:
             _refuse_at_length_slip(analysis, f"draws the paths of the points {extent / given:.3g} mm across at "
                                    f"drawing.length_scale = {format_scale(given)}", extent / given)
+            usual = positions_scale(extent)
             raise SceneError("drawing.length_scale", f"draws the paths of the points {extent / given:.3g} mm across, "
-                             f"more than any paper ({LARGEST_PAPER_MM:g} mm): give "
-                             f"{format_scale(positions_scale(extent))} (a plan of positions "
-                             f"{extent / positions_scale(extent):.0f} mm across), or leave it out for the program to "
-                             "choose", given)
+                             f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {format_scale(usual)} (a plan of "
+                             f"positions {extent / usual:.0f} mm across), or leave it out for the program to choose",
+                             given)
         return given
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
@@ -174,9 +174,9 @@ def below_reading(analysis: Analysis) -> list[str]:
     if drawing.length_scale is not None:
         extent = paths_extent(analysis)
         if extent / drawing.length_scale < READABLE_SHARE * POSITIONS_FIELD_MM:
+            usual = positions_scale(extent)
             told.append(f"drawing.length_scale: draws the paths of the points {extent / drawing.length_scale:.3g} mm "
-                        f"across, too small to read; {format_scale(positions_scale(extent))} draws them "
-                        f"{extent / positions_scale(extent):.0f} mm across")
+                        f"across, too small to read; {format_scale(usual)} draws them {extent / usual:.0f} mm across")
     # The velocity plans of every position drawn at velocity_plans_pole are judged apart, each at that pole (a plan
     # sheet's position among them holds its sheet's larger plan): the plan sheets' plans would hide a slip of the
     # key's unit.  Without that pole they are drawn at the program's own μV, which fills their field, and
