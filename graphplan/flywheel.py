@@ -918,7 +918,9 @@ def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch
     from .machine_motion import KlossMotor
 
     motor = getattr(spec.motion, "motor", None)
-    mean = _mean_speed(spec, crank_omega)
+    # A mean speed typed in the other unit is told on its own line: the gear is weighed against the crank's.
+    against_crank = speed_unit_slip(spec, crank_omega) is not None
+    mean = _mean_speed(spec, crank_omega, against_crank)
     own = _motor_own_speed(motor)
     if mean is None or own is None:
         return None
@@ -929,14 +931,16 @@ def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch
     if 1.0 / GEAR_MISMATCH <= at_shaft / mean <= most:
         return None
     return GearMismatch(where=spec.where, gear_ratio=motor.gear_ratio, what=what, speed=speed, at_shaft=at_shaft,
-                        mean=mean, against_crank=speed_unit_slip(spec, crank_omega) is not None)
+                        mean=mean, against_crank=against_crank)
 
 
-def _mean_speed(spec: DynamicsSpec, crank_omega: float | None) -> float | None:
+def _mean_speed(spec: DynamicsSpec, crank_omega: float | None, against_crank: bool | None = None) -> float | None:
     """The machine's mean speed a motor is weighed against (rad/s): ``[dynamics]``' ``rpm`` or ``omega``, else the
-    crank's ``crank_omega``; None with neither."""
+    crank's ``crank_omega``; None with neither.  ``against_crank``: whether that mean speed reads as the crank's in
+    the other unit (:func:`speed_unit_slip`), worked out here where not given."""
     # A mean speed typed in the other unit is told on its own line: the motor is weighed against the crank's.
-    against_crank = speed_unit_slip(spec, crank_omega) is not None
+    if against_crank is None:
+        against_crank = speed_unit_slip(spec, crank_omega) is not None
     return spec.omega if spec.omega is not None and not against_crank else abs(crank_omega) if crank_omega else None
 
 
