@@ -115,6 +115,24 @@ def test_a_position_s_plan_sheet_is_the_run_s_at_the_mu_l_the_run_chooses(tmp_pa
     assert graphplan.load(path).plan(3).drawing.svg == written
 
 
+def test_the_positions_of_one_scene_share_the_run_s_choice_of_mu_l(monkeypatch):
+    """Each plan(n).drawing chose the run's μl again, laying every plan position's sheets out at a few μl (2 to 4 s
+    a drawing on the shaper): a scene's positions now choose it once, and a changed scene chooses afresh."""
+    from graphplan.render import sheet
+
+    chosen = []
+    choose = sheet.fewest_sheets_length_scale
+    monkeypatch.setattr(sheet, "fewest_sheets_length_scale", lambda *given: chosen.append(given) or choose(*given))
+    ratchet = graphplan.load(RATCHET)
+    left = dataclasses.replace(ratchet, drawing=dataclasses.replace(ratchet.drawing, length_scale=None))
+    first, again = left.plan(5).drawing.svg, left.plan(5).drawing.svg
+    left.plan(2).drawing
+    assert first == again
+    assert len(chosen) == 1
+    dataclasses.replace(left, title="Another").plan(5).drawing
+    assert len(chosen) == 2
+
+
 
 @pytest.fixture(scope="module")
 def rotor_path(tmp_path_factory):
