@@ -28,6 +28,7 @@ import numpy as np
 
 from .geometry import Line, ParallelLinesError, cross_lines, crossing_angle_deg
 from .kinematics import Scalar, Vector, cross
+from .lookalikes import NamedValues
 from .plans import guide_at
 from .scales import standard_scale
 from .settling import settle
@@ -313,6 +314,10 @@ class ForcePlan:
     iterations: int = 0
     locked: bool = False
     auxiliary: Mapping[str, complex] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "reactions", NamedValues(self.reactions, "is no reaction the force analysis finds, "
+                                                                          "which finds"))
 
     def __repr__(self) -> str:
         # The dataclass's own repr printed every polygon's vectors (some 8 000 characters).

@@ -13,9 +13,11 @@ or one whose letter is a construction's own (N3 beside the normal component's n3
 
 from __future__ import annotations
 
+import difflib
 import re
 import unicodedata
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
+from typing import Any
 
 # Letters drawn like a Latin one: what a Russian keyboard types for the Latin names beside them (and Greek capitals,
 # which a mathematical font draws the same).  Every dash and the minus sign read as the hyphen a keyboard has.
@@ -123,5 +125,25 @@ def lookalike_hint(name: str, names: Iterable[str]) -> str:
     return f"; {difference(name, meant)}" if meant is not None else ""
 
 
-__all__ = ["construction_letter_clash", "contrast", "described", "difference", "lookalike_hint", "plain", "plan_letter",
+class NamedValues(dict):
+    """Values by name, where a name they have not is told with the names they have and the nearest, as the scene's
+    keys are: ``values["omega_4"]`` and ``reactions["R32"]`` gave a bare KeyError. ``told`` says what the values
+    are, as "is no value of the plans, which give"."""
+
+    def __init__(self, values: Mapping[str, Any], told: str) -> None:
+        super().__init__(values)
+        self.told = told
+
+    def __missing__(self, key: object) -> Any:
+        near = difflib.get_close_matches(str(key), list(self), n=1)
+        hint = lookalike_hint(key, self) if isinstance(key, str) else ""
+        if not hint and near:
+            hint = f"; did you mean {near[0]!r}?"
+        raise KeyError(f"{key!r} {self.told} {', '.join(self) or 'none'}{hint}")
+
+    def __reduce__(self):  # copied or pickled with what it says of a missing name
+        return (type(self), (dict(self), self.told))
+
+
+__all__ = ["NamedValues", "construction_letter_clash", "contrast", "described", "difference", "lookalike_hint", "plain", "plan_letter",
            "twin"]

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import copy
 import dataclasses
-import difflib
 import os
 from dataclasses import dataclass
 from functools import cached_property
@@ -29,6 +28,7 @@ from .analysis import Analysis, PlanPosition, analyse, measured_on_velocity_plan
 from .check import ErrorRow
 from .errors import SceneError
 from .forces import ForcePlan
+from .lookalikes import NamedValues
 from .memo import OwnedMemo
 from .motion import solve
 from .plans import Plan
@@ -75,16 +75,6 @@ class Drawing:
         return path
 
 
-class _Values(dict):
-    """The values read off a position's plans, by name: a name it has not is told with the names it has and the
-    nearest, as the scene's keys are (``values["omega_4"]`` gave a bare KeyError('omega_4'))."""
-
-    def __missing__(self, key: object) -> float:
-        near = difflib.get_close_matches(str(key), list(self), n=1)
-        hint = f"; did you mean {near[0]!r}?" if near else ""
-        raise KeyError(f"{key!r} is no value of the plans, which give {', '.join(self)}{hint}")
-
-
 # The μl a scene's run draws at, by scene: choosing it lays every plan position's sheets out at a few μl (2 to 4 s on
 # the shaper), and each plan(n) of one scene would choose the same again.
 _RUN_LENGTH_SCALES: OwnedMemo[float] = OwnedMemo()
@@ -119,12 +109,13 @@ class PositionPlans:
         return self.position.acceleration
 
     @property
-    def values(self) -> _Values:
+    def values(self) -> NamedValues:
         """Every quantity read off the plans as constructed, SI, keyed as the error table names them: ``VB``,
         ``aB`` (magnitudes, m/s and m/s²), ``omega3``, ``epsilon4`` (rad/s and rad/s², signed, counter-clockwise
         positive), and the sliding pairs' relative velocity (``VA4A3``) and relative acceleration along the guide
         (``aA4A3^r``); ``aA4A3`` without ``^r`` is the whole of aA4 − aA3, the Coriolis term 2·ω4·VA4A3 in it."""
-        return _Values({reading.quantity: reading.value(self.position.plans) for reading in self.position.readings})
+        return NamedValues({reading.quantity: reading.value(self.position.plans) for reading in self.position.readings},
+                           "is no value of the plans, which give")
 
     @property
     def errors(self) -> tuple[ErrorRow, ...]:

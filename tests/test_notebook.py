@@ -126,10 +126,10 @@ def test_the_positions_of_one_scene_share_the_run_s_choice_of_mu_l(monkeypatch):
     ratchet = graphplan.load(RATCHET)
     left = dataclasses.replace(ratchet, drawing=dataclasses.replace(ratchet.drawing, length_scale=None))
     first, again = left.plan(5).drawing.svg, left.plan(5).drawing.svg
-    left.plan(2).drawing
     assert first == again
+    assert "μl" in flat(left.plan(2).drawing.svg)
     assert len(chosen) == 1
-    dataclasses.replace(left, title="Another").plan(5).drawing
+    assert "μl" in flat(dataclasses.replace(left, title="Another").plan(5).drawing.svg)
     assert len(chosen) == 2
 
 
@@ -280,3 +280,24 @@ def test_a_value_the_plans_do_not_give_is_told_with_those_they_do(scene):
         "; did you mean 'omega4'?")
     assert all(name in told for name in values)
     assert values.get("omega_4") is None and "omega_4" not in values
+
+
+def test_a_reaction_the_force_analysis_does_not_find_is_told_with_those_it_does(scene):
+    """forces.reactions["R32"] gave a bare KeyError('R32'), the values beside it their names; a name typed in
+    Cyrillic letters is told which letter is which."""
+    import copy
+    import pickle
+
+    reactions = scene.plan(5).forces.reactions
+    assert reactions["R23"].force == dict(reactions)["R23"].force
+    with pytest.raises(KeyError) as missing:
+        reactions["R32"]
+    told = missing.value.args[0]
+    assert told.startswith("'R32' is no reaction the force analysis finds, which finds ") and "did you mean" in told
+    assert all(name in told for name in reactions)
+    with pytest.raises(KeyError, match="Cyrillic"):
+        scene.plan(5).values["VВ"]
+    for kept in (copy.deepcopy(reactions), pickle.loads(pickle.dumps(reactions))):
+        assert kept.keys() == reactions.keys()
+        with pytest.raises(KeyError, match="is no reaction"):
+            kept["R32"]
