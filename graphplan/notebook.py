@@ -173,6 +173,21 @@ class PositionPlans:
         return self.drawing.svg
 
 
+def warn_of_slips(analysis: Analysis) -> Analysis:
+    """``analysis``, its warnings of the scene as a whole (a speed in rpm, lengths in mm, masses in grams) warned of
+    with a ``UserWarning`` first: the command line prints them, and a notebook's numbers, off a thousandfold, came
+    with no word."""
+    import warnings
+
+    from . import _caller_level
+    from .analysis import SCENE_WIDE_WARNINGS
+
+    for warning in analysis.warnings:
+        if warning.code in SCENE_WIDE_WARNINGS:
+            warnings.warn(f"{warning.code}: {warning.detail}", UserWarning, stacklevel=_caller_level())
+    return analysis
+
+
 def plan(scene: Scene, number: int) -> PositionPlans:
     """The plans of the position numbered ``number`` (as the scene numbers them), drawn whether listed or not."""
     if not isinstance(scene, Scene):  # a path failed on its missing .positions
@@ -200,6 +215,7 @@ def plan(scene: Scene, number: int) -> PositionPlans:
         reason = next((warning.detail for warning in analysis.warnings
                        if int(analysis.positions.numbers[warning.position]) == number), "it is singular")
         raise SceneError("positions", f"position {number} has no plans: {reason}")
+    warn_of_slips(analysis)
     position = analysis.plans[0]
     if hand and on_grid:
         position = dataclasses.replace(position, errors=position.errors + measured_on_velocity_plans(analysis, number,

@@ -278,12 +278,14 @@ class Scene:
         return solve(self, driver)
 
     def analyse(self) -> Analysis:
-        """The whole analysis of the scene's mechanism (:func:`graphplan.analysis.analyse`)."""
+        """The whole analysis of the scene's mechanism (:func:`graphplan.analysis.analyse`); what the scene seems to
+        have mistyped (a speed in rpm, lengths in mm) is warned of with a ``UserWarning``, as the command line warns."""
         from .analysis import analyse
+        from .notebook import warn_of_slips
 
         if not self.has_linkage:
             raise missing_part(self, "mechanism")
-        return analyse(self)
+        return warn_of_slips(analyse(self))
 
     def machine_dynamics(self) -> MachineDynamics:
         """The scene's ``[dynamics]`` worked out as a run works it out: ``.model`` (Je, Me over the cycle),

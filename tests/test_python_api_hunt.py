@@ -263,3 +263,22 @@ def test_a_driver_with_masked_values_is_refused_rather_than_solved_at_what_the_m
         ratchet.solve(driver=angles)
     assert ratchet.solve(driver=angles.compressed()).driver.tolist() == [0.1, 0.3]
     assert ratchet.solve(driver=np.ma.masked_array([0.1, 0.2])).count == 2  # a mask that hides nothing
+
+
+def test_a_scene_mistyped_in_its_units_is_warned_of_in_python_as_on_the_command_line():
+    """A crank's speed typed in rpm (ω = 1450) gave plans a hundred times too fast in a notebook with no word: the
+    command line warned of it, scene.analyse() and scene.plan(n) kept the warning in analysis.warnings alone."""
+    import tomllib
+
+    tables = tomllib.loads(Path(RATCHET).read_text(encoding="utf-8"))
+    tables["driver"]["omega"] = -1450.0
+    slipped = graphplan.load(tables)
+    told_so = r"^speed-in-rpm: driver\.omega = -1450 rad/s"
+    for call in (slipped.analyse, lambda: slipped.plan(5)):
+        with pytest.warns(UserWarning, match=told_so) as told:
+            call()
+        assert Path(told[0].filename).name == Path(__file__).name  # at the notebook's line, not graphplan's
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        graphplan.load(RATCHET).analyse()
+        graphplan.load(RATCHET).plan(5)
