@@ -3,6 +3,7 @@
 The Python interface::
 
     scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")   # or graphplan.load_text(toml_text)
+    shaper = graphplan.load_text(graphplan.starter("shaper", "ru"))   # `graphplan new shaper --locale ru`
     motion = graphplan.solve(scene, driver=np.radians(np.arange(0, 360, 0.01)))
     motion.point("B").r, motion.link(4).omega
 """
@@ -32,12 +33,14 @@ if TYPE_CHECKING:
     from .mechanism import Mechanism, build
     from .motion import Motion
     from .scene import Scene, load
+    from .starters import starter
 
 __version__ = "0.1.0"
 
 # The interface's names from the analysis's modules, each imported when first asked for (PEP 562): the command line
 # imports this package before any command, and `graphplan --help` or `graphplan new` needs none of the analysis.
-_LAZY = {"Mechanism": "mechanism", "build": "mechanism", "Motion": "motion", "Scene": "scene", "load": "scene"}
+_LAZY = {"Mechanism": "mechanism", "build": "mechanism", "Motion": "motion", "Scene": "scene", "load": "scene",
+         "starter": "starters"}
 
 
 def __getattr__(name: str) -> Any:
@@ -202,4 +205,5 @@ __all__ = [
     "load",
     "load_text",
     "solve",
+    "starter",
 ]

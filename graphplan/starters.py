@@ -21,7 +21,12 @@ _NAMED_WORDS = {"ram": "starter_line_ram"}
 
 def starter(kind: str, locale: str = "en") -> str:
     """The commented scene of ``kind`` (one of :data:`KINDS`), its drawings and note in ``locale``: its title and
-    the names its note prints in that language (its comments stay English)."""
+    the names its note prints in that language (its comments stay English).  The TOML text that ``graphplan new
+    KIND --locale LOCALE`` writes, for :func:`graphplan.load_text`::
+
+        shaper = graphplan.load_text(graphplan.starter("shaper", "ru"))
+        shaper.plan(3).values["VA4A3"]   # the slider's velocity along the rocker, m/s
+    """
     if kind not in KINDS:
         raise ValueError(f"no starter scene {kind!r}; there are {', '.join(KINDS)}")
     if locale not in LOCALES:
