@@ -1,5 +1,6 @@
 """Hand readings (``[measured.N]``) far off the plan as constructed: a length misread, a segment taken for
-another, or a whole plan or force polygon drawn at another scale than the scene's.
+another, a whole plan or force polygon drawn at another scale than the scene's, or an acceleration plan built with
+its Coriolis parts laid off the wrong way.
 
 A plan drawn with care keeps within a few per cent of the construction, and
 a short segment within the drafting precision of its two ends; a reading
@@ -22,8 +23,10 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from .check import ErrorRow, exact_values_at, is_balancing, is_reaction, quantity_symbol, segment_millimetres
+from .geometry import ParallelLinesError
 from .locale import strings
 from .motion import Motion, PositionWarning
+from .plans import acceleration_plan
 from .scales import nearest_standard_scale
 
 if TYPE_CHECKING:
@@ -115,6 +118,11 @@ class Slips:
     # Reactions read off the course sheet, which draws the position's polygons larger than the record where it has
     # room: not in ``rescaled`` nor ``misread``.
     on_sheet: OnSheet | None = None
+    # The readings of the acceleration plan, as the scene writes them, where every one fits the plan with its Coriolis
+    # parts laid off the other way (:func:`coriolis_reversed`), and the Coriolis parts as the plan names them (aA4A3ᵏ).
+    # Not in ``misread`` nor ``rescaled``.
+    coriolis_reversed: tuple[str, ...] = ()
+    coriolis_parts: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -209,12 +217,13 @@ class Segment:
 
 
 def slips(position: VelocityPosition, drawing: Drawing, joint: str,
-          sheets: tuple[SheetPolygons, ...] = ()) -> Slips | None:
+          sheets: tuple[SheetPolygons, ...] = (), mechanism: Mechanism | None = None) -> Slips | None:
     """The hand readings of ``position`` far off its constructed plans and polygons, or None where all are near.
 
     ``drawing`` is the scene's (its precision and the keys a rescaled drawing is set by), ``joint`` the driver's
     point, whose vector on a plan is its pole distance; ``sheets`` the position's force sheets as the course sheets
-    draw them larger (:class:`SheetPolygons`, one or several), where the run drew the sheets so.
+    draw them larger (:class:`SheetPolygons`, one or several), where the run drew the sheets so.  Given the
+    ``mechanism``, an acceleration plan whose readings fit it built with the Coriolis parts reversed is told so.
     """
     precision = drawing.drafting_precision
     constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
@@ -227,6 +236,11 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
     if on_sheet is not None:
         measured = [(row, plan) for row, plan in measured if not _read_on_sheet(row, on_sheet)]
         far = [(row, plan) for row, plan in far if not _read_on_sheet(row, on_sheet)]
+    reversed_parts = () if mechanism is None else coriolis_reversed(mechanism, position, measured, far, precision)
+    reversed_readings = tuple(dict.fromkeys(row.reading for row, _ in measured if _plan_of(row) == "acceleration")) \
+        if reversed_parts else ()
+    measured = [(row, plan) for row, plan in measured if row.reading not in reversed_readings]
+    far = [(row, plan) for row, plan in far if row.reading not in reversed_readings]
     # One rule for every drawing: the plans, then every force polygon together (the scene's one force_scale
     # sets them all, so a student who drew them all at one μF is told that one key), then each polygon alone.
     reactions = [(row, plan) for row, plan in measured if _plan_of(row) == "forces"]
@@ -256,7 +270,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
             rescaled.append(replace(_rescaled(kind, polygon, kept, drawn_at, position, drawing, joint),
                                     but=(left_out,)))
             far = [(row, plan) for row, plan in far if not any(row is each for each, _, _ in kept)]
-    if not rescaled and not far and on_sheet is None:
+    if not rescaled and not far and on_sheet is None and not reversed_readings:
         return None
     misread: dict[str, list[tuple[ErrorRow, float]]] = {}
     for row, plan in far:
@@ -319,7 +333,40 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
                                    for kind, (other, read) in other_plan.items()}),
                  MappingProxyType(typed_in["metres"]), MappingProxyType(typed_in["centimetres"]),
-                 MappingProxyType(force_scale), MappingProxyType(values), on_sheet)
+                 MappingProxyType(force_scale), MappingProxyType(values), on_sheet, reversed_readings, reversed_parts)
+
+
+def coriolis_reversed(mechanism: Mechanism, position: VelocityPosition, measured: list[tuple[ErrorRow, float]],
+                      far: list[tuple[ErrorRow, float]], precision: float) -> tuple[str, ...]:
+    """The Coriolis parts of ``position``'s acceleration plan (``aA4A3ᵏ``), where its hand readings, one at least
+    far off the plan as constructed, are each its segment on the plan built with every Coriolis part laid off
+    against 2·ω × v_rel, as closely as a careful drawing keeps to the construction (the drafting precision twice,
+    or :data:`UNIFORM_SLIP_PERCENT`); else none.
+
+    Turning v_rel the wrong way is the slip the Coriolis part is known for: every segment from it on is off, and
+    was told as so many lengths misread.  Two readings at least, since one may fit by chance."""
+    plan = position.plans.get("acceleration")
+    if plan is None or not any(_plan_of(row) == "acceleration" for row, _ in far):
+        return ()
+    parts = tuple(dict.fromkeys(vector.meaning for step in plan.steps for vector in step.vectors
+                                if "ᵏ" in vector.meaning))
+    rows = [row for row, _ in measured if _plan_of(row) == "acceleration"]
+    if not parts or len({row.reading for row in rows}) < 2:
+        return ()
+    try:
+        reversed_plan = acceleration_plan(mechanism, position.positions, position.directions, position.velocity,
+                                          plan.scale, coriolis_reversed=True)
+    except ParallelLinesError:  # its lines cross nowhere: no plan a hand could have drawn
+        return ()
+    for row in rows:
+        segment = _segment_of(position, row)
+        if segment is None or not all(letter in reversed_plan.points for letter in segment):
+            return ()
+        there = segment_millimetres(reversed_plan, segment)
+        if abs(_hand_millimetres(row) - there) > max(FAR_OFF_PRECISIONS * precision,
+                                                     UNIFORM_SLIP_PERCENT / 100.0 * there):
+            return ()
+    return parts
 
 
 def _tangential(position: VelocityPosition, row: ErrorRow) -> tuple[str, float, float] | None:
@@ -758,12 +805,18 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
     sheets = sheets or {}
     warnings = []
     for position in drawn:
-        found = slips(position, drawing, joint, sheet_of(position, sheets))
+        found = slips(position, drawing, joint, sheet_of(position, sheets), mechanism)
         if found is None:
             continue
         details = []
         if found.on_sheet is not None:
             details.append(on_sheet_detail(found.on_sheet, position.number))
+        if found.coriolis_reversed:
+            details.append(f"every reading of the acceleration plan ({', '.join(map(_name, found.coriolis_reversed))}) "
+                           f"fits the plan with {' and '.join(found.coriolis_parts)} laid off the other way, not the "
+                           f"plan as constructed (each to {FAR_OFF_PRECISIONS * precision:g} mm or "
+                           f"{UNIFORM_SLIP_PERCENT:g} %): 2·ω × v_rel is v_rel turned by 90° in the sense of ω; the "
+                           f"Coriolis {'part' if len(found.coriolis_parts) == 1 else 'parts'} laid off reversed?")
         for rescaled in found.rescaled:
             typed = typed_unit(rescaled.ratio)
             if typed is not None:

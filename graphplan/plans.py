@@ -247,9 +247,20 @@ class Builder:
     turns_with: dict[int, int] = field(default_factory=dict)
     slide_ends: dict[int, tuple[str, str]] = field(default_factory=dict)
     auxiliary: dict[str, complex] = field(default_factory=dict)
+    # The Coriolis parts laid off against 2·ω × v_rel, as a student who turned v_rel the wrong way did: the plan whose
+    # lengths such a student's readings are (:func:`graphplan.misreadings.slips`).
+    coriolis_reversed: bool = False
 
     def image(self, point: str) -> complex:
         return self.points[self.images[point]]
+
+    def coriolis(self, omega: float, relative: complex) -> complex:
+        """The Coriolis part as this board lays it off: 2·ω × v_rel (:func:`graphplan.groups.sliding.coriolis`),
+        or against it where the board lays them off reversed."""
+        from .groups.sliding import coriolis
+
+        laid = coriolis(omega, relative)
+        return -laid if self.coriolis_reversed else laid
 
     def guide_line(self, guide) -> tuple[complex, complex, int]:
         """A guide at this instant: a point of it (m), its unit direction, the link that carries it."""
@@ -381,9 +392,11 @@ def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], direct
 
 
 def acceleration_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
-                      velocities: Plan, scale: float | None = None) -> Plan:
-    """The acceleration plan of the same instant, using ω and relative velocities read off ``velocities``."""
-    board = Builder("acceleration", mechanism, positions, directions, _size(positions))
+                      velocities: Plan, scale: float | None = None, coriolis_reversed: bool = False) -> Plan:
+    """The acceleration plan of the same instant, using ω and relative velocities read off ``velocities``; with
+    ``coriolis_reversed``, the plan of a hand that laid every Coriolis part off the wrong way."""
+    board = Builder("acceleration", mechanism, positions, directions, _size(positions),
+                    coriolis_reversed=coriolis_reversed)
     _frame_at_pole(board, mechanism)
     for unit in mechanism.units:
         unit.solver.construct_acceleration(board, velocities)  # type: ignore[union-attr]

@@ -27,7 +27,6 @@ from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import SINGULAR_SINE, UNREAD_GUIDE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch
 from .sliding import (
-    coriolis,
     coriolis_letter,
     guide_link,
     guide_meaning,
@@ -193,7 +192,7 @@ class PRP(Group):
             if slider in turning:
                 v_rel = velocities.value(b_name) - velocities.points[under]
                 start = board.mark(coriolis_letter(board, slider),
-                                   board.points[under] + coriolis(velocities.rates.get(carrier, 0.0), v_rel))
+                                   board.points[under] + board.coriolis(velocities.rates.get(carrier, 0.0), v_rel))
                 laid.append(LaidVector(under, start, f"a{b_name}{g}ᵏ"))
                 marks.append(start)
                 term += f" + a{b_name}{g}ᵏ"

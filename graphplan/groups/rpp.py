@@ -33,7 +33,6 @@ from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, ima
 from ..reader import Table, radians_within_a_turn
 from .base import UNREAD_GUIDE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch, turns
 from .sliding import (
-    coriolis,
     coriolis_letter,
     free_letter,
     guide_link,
@@ -174,9 +173,9 @@ class RPP(Group):
             v_slot = velocities.points[coincident] - velocities.value(a_name)
             v_guide = velocities.points[coincident] - velocities.points[ag]
             k_slot = board.mark(coriolis_letter(board, block),
-                                board.points[a] + coriolis(velocities.rates[slotted], v_slot))
+                                board.points[a] + board.coriolis(velocities.rates[slotted], v_slot))
             k_guide = board.mark(coriolis_letter(board, slotted),
-                                 board.points[ag] + coriolis(velocities.rates.get(carrier, 0.0), v_guide))
+                                 board.points[ag] + board.coriolis(velocities.rates.get(carrier, 0.0), v_guide))
             laid += [LaidVector(a, k_slot, f"a{point}{pin}ᵏ"), LaidVector(ag, k_guide, f"a{point}{g}ᵏ")]
             equation = [f"{equation[0]} + a{point}{pin}ᵏ", f"{equation[1]} + a{point}{g}ᵏ"]
         value, angle = board.cross(Line(board.points[k_slot], along_slot, on_slot.text),

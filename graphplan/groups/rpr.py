@@ -32,7 +32,7 @@ from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
 from ..rounding import figures_below
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, refuse_branch
-from .sliding import coriolis, coriolis_letter
+from .sliding import coriolis_letter
 
 if TYPE_CHECKING:
     from ..motion import Motion
@@ -219,7 +219,7 @@ class RPR(Group):
         a, c = board.images[a_name], board.images[c_name]
         omega = velocities.rates[lever]
         v_rel = velocities.value(self.coincident) - velocities.value(a_name)
-        k = board.mark(coriolis_letter(board, block), board.points[a] + coriolis(omega, v_rel))
+        k = board.mark(coriolis_letter(board, block), board.points[a] + board.coriolis(omega, v_rel))
         normal = board.mark(f"n{lever}", board.points[c] - omega**2 * (a_pos - c_pos))
         a4, angle, along, slide, across_ca = self._close(board, k, normal)
         pin, point = f"{a_name}{block}", self.coincident

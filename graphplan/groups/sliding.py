@@ -46,7 +46,7 @@ def coriolis_end(board: Builder, velocities: Plan, point: str, slider: int, carr
     the pin ``point``), vPPg read off the velocity plan; marked and returned."""
     relative = velocities.value(point) - velocities.points[on_guide]
     return board.mark(coriolis_letter(board, slider),
-                      board.points[on_guide] + coriolis(velocities.rates.get(carrier, 0.0), relative))
+                      board.points[on_guide] + board.coriolis(velocities.rates.get(carrier, 0.0), relative))
 
 
 def guide_meaning(guide: Guide) -> LineMeaning:

@@ -22,6 +22,7 @@ from ..locale import strings
 from ..misreadings import (
     FAR_OFF_PERCENT,
     FAR_OFF_PRECISIONS,
+    UNIFORM_SLIP_PERCENT,
     OnSheet,
     Rescaled,
     factor_text,
@@ -123,7 +124,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     error table in the scene's language: a plan drawn at another scale, or each misread length.  ``in_note``:
     for the explanatory note's reader, who knows the sheets by their captions, not by the files they are in."""
     found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint,
-                  sheet_of(plan, analysis.sheet_polygons))
+                  sheet_of(plan, analysis.sheet_polygons), analysis.mechanism)
     nearer = _nearer_with_friction(analysis, plan, mark, in_note)
     if found is None:
         return nearer
@@ -135,6 +136,11 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     drawn = (*analysis.plans, *analysis.velocity_plans)
     if found.on_sheet is not None:
         lines.append(_on_sheet_line(found.on_sheet, plan.number, text, mark, in_note))
+    if found.coriolis_reversed:
+        lines.append(text["errors_coriolis_reversed"].format(
+            readings=", ".join(reading.split(" = ")[0] for reading in found.coriolis_reversed),
+            parts=text["enumeration"].join(found.coriolis_parts), percent=f"{UNIFORM_SLIP_PERCENT:g}",
+            millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
     for rescaled in found.rescaled:
         typed = typed_unit(rescaled.ratio)
         if typed is not None:

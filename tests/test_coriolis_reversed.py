@@ -1,0 +1,108 @@
+"""An acceleration plan built with the Coriolis part laid off the wrong way, the slip the Coriolis part is known
+for: every segment from it on is off, and the readings were told as so many lengths misread.
+
+The student's plan is worked out here by hand, from the exact motion: for the slotted lever (block 3 on the crank
+pin A, lever 4 about C), aA4 = aA + aA4A3ᵏ + aA4A3^r = aC + aA4Cⁿ + aA4C^τ, solved with aA4A3ᵏ = −2·ω4 × vA4A3.
+"""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+
+SCENE = Path("fixtures/quick_return_slotted_lever.toml")
+NUMBER = 4
+
+
+def _vector(array_row) -> complex:
+    return complex(*array_row)
+
+
+def _hand_plan(coriolis_sense: float) -> dict[str, float]:
+    """The lengths (mm) a hand reads off position 4's acceleration plan, its Coriolis part laid off along
+    ``coriolis_sense`` times 2·ω4 × vA4A3, at the scene's pole (πa = 100 mm)."""
+    tables = tomllib.loads(SCENE.read_text(encoding="utf-8"))
+    motion = graphplan.load(tables).solve()
+    index = list(analyse(graphplan.load(tables)).positions.numbers).index(NUMBER)
+    a_pin = _vector(motion.point("A").a[index])
+    where_a, where_c = _vector(motion.point("A").r[index]), _vector(motion.point("C").r[index])
+    omega4 = float(motion.link(4).omega[index])
+    relative = _vector(motion.point("A4").v[index]) - _vector(motion.point("A").v[index])
+    coriolis = coriolis_sense * 2j * omega4 * relative
+    along = (where_a - where_c) / abs(where_a - where_c)
+    normal = -omega4**2 * (where_a - where_c)
+    # r·along − t·(i·along) = normal − aA − coriolis: the relative part along the slot, the tangential across CA.
+    rhs = normal - a_pin - coriolis
+    matrix = np.array([[along.real, -(1j * along).real], [along.imag, -(1j * along).imag]])
+    sliding, tangential = np.linalg.solve(matrix, [rhs.real, rhs.imag])
+    a_lever = normal + tangential * 1j * along
+    per_mm = abs(a_pin) / tables["drawing"]["acceleration_pole"]
+    lever_d = 0.55 / abs(where_a - where_c)  # D stands 0.55 m from C along CA
+    return {"pa4": abs(a_lever) / per_mm, "ka4": abs(sliding) / per_mm, "n4a4": abs(tangential) / per_mm,
+            "pd": abs(a_lever) * lever_d / per_mm}
+
+
+def _scene(readings: dict[str, float], locale: str = "en") -> dict:
+    tables = tomllib.loads(SCENE.read_text(encoding="utf-8"))
+    tables["scene"]["locale"] = locale
+    tables["measured"] = {str(NUMBER): {"acceleration": {name: round(value, 1) for name, value in readings.items()}}}
+    return tables
+
+
+def _far_off_warnings(tables: dict) -> list[str]:
+    return [warning.detail for warning in analyse(graphplan.load(tables)).warnings
+            if warning.code == "measured-far-off"]
+
+
+def test_the_hand_plan_laid_off_rightly_is_the_construction():
+    """The hand's plan, worked out here, is the program's where the Coriolis part is laid off as it should be: the
+    readings taken off it are within the drafting precision, and nothing is told of them."""
+    assert _far_off_warnings(_scene(_hand_plan(+1.0))) == []
+
+
+def test_readings_of_a_plan_with_the_coriolis_part_reversed_are_told_so():
+    reversed_plan, right = _hand_plan(-1.0), _hand_plan(+1.0)
+    assert abs(reversed_plan["pa4"] - right["pa4"]) > 5.0  # far off the construction, and so told
+    [told] = _far_off_warnings(_scene(reversed_plan))
+    assert told.startswith(f"measured.{NUMBER}: every reading of the acceleration plan (pa4, ka4, n4a4, pd) fits the "
+                           "plan with aA4A3ᵏ laid off the other way")
+    assert "2·ω × v_rel is v_rel turned by 90° in the sense of ω" in told
+    assert "misread" not in told and "taken for" not in told and "times the plan" not in told
+
+
+def test_one_misread_length_is_not_taken_for_a_reversed_coriolis_part():
+    """A plan laid off rightly but for one length misread fits the reversed plan nowhere but by chance."""
+    readings = _hand_plan(+1.0)
+    readings["pd"] *= 1.4
+    [told] = _far_off_warnings(_scene(readings))
+    assert "laid off the other way" not in told
+    assert "pd = 55.2 mm gives aD" in told and told.endswith("a length misread, or a segment taken for another?")
+
+
+@pytest.mark.parametrize(("locale", "words"), [("en", "laid off reversed?"), ("ru", "отложено в обратную сторону?"),
+                                               ("zh", "科氏加速度是否画反了？")])
+def test_the_error_table_tells_it_in_the_scene_s_language(tmp_path, locale, words):
+    path = tmp_path / "reversed.toml"
+    tables = _scene(_hand_plan(-1.0), locale)
+    path.write_text(_toml(tables), encoding="utf-8")
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "errors", "--sheet", "none"]) == 0
+    errors = (tmp_path / "out" / "errors.md").read_text(encoding="utf-8")
+    assert words in errors and "aA4A3ᵏ" in errors
+    results = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert any(warning["code"] == "measured-far-off" for warning in results["warnings"])
+
+
+def _toml(tables: dict) -> str:
+    """The scene's tables back as TOML: the fixture's text with the locale and the readings changed."""
+    text = SCENE.read_text(encoding="utf-8").replace('locale  = "en"', f'locale  = "{tables["scene"]["locale"]}"')
+    readings = tables["measured"][str(NUMBER)]["acceleration"]
+    given = ", ".join(f"{name} = {value}" for name, value in readings.items())
+    return f"{text}\n[measured.{NUMBER}]\nacceleration = {{ {given} }}\n"
