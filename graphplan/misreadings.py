@@ -26,7 +26,7 @@ from .check import ErrorRow, exact_values_at, is_balancing, is_reaction, quantit
 from .geometry import ParallelLinesError
 from .locale import strings
 from .motion import Motion, PositionWarning
-from .plans import acceleration_plan
+from .plans import Plan, acceleration_plan
 from .scales import nearest_standard_scale
 
 if TYPE_CHECKING:
@@ -338,35 +338,40 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
 
 def coriolis_reversed(mechanism: Mechanism, position: VelocityPosition, measured: list[tuple[ErrorRow, float]],
                       far: list[tuple[ErrorRow, float]], precision: float) -> tuple[str, ...]:
-    """The Coriolis parts of ``position``'s acceleration plan (``aA4A3ᵏ``), where its hand readings, one at least
-    far off the plan as constructed, are each its segment on the plan built with every Coriolis part laid off
-    against 2·ω × v_rel, as closely as a careful drawing keeps to the construction (the drafting precision twice,
-    or :data:`UNIFORM_SLIP_PERCENT`); else none.
+    """The Coriolis parts of ``position``'s acceleration plan (``aA4A3ᵏ``) that its hand readings, one at least far
+    off the plan as constructed, find laid off against 2·ω × v_rel: every reading is its segment on the plan built
+    so, as closely as a careful drawing keeps to the construction (the drafting precision twice, or
+    :data:`UNIFORM_SLIP_PERCENT`); all the parts tried first, then each alone.  None where no such plan fits.
 
     Turning v_rel the wrong way is the slip the Coriolis part is known for: every segment from it on is off, and
     was told as so many lengths misread.  Two readings at least, since one may fit by chance."""
     plan = position.plans.get("acceleration")
     if plan is None or not any(_plan_of(row) == "acceleration" for row, _ in far):
         return ()
-    parts = tuple(dict.fromkeys(vector.meaning for step in plan.steps for vector in step.vectors
-                                if "ᵏ" in vector.meaning))
+    # By the letter of its end (k, k5), each part as the plan names it.
+    parts = {vector.end: vector.meaning for step in plan.steps for vector in step.vectors if "ᵏ" in vector.meaning}
     rows = [row for row, _ in measured if _plan_of(row) == "acceleration"]
     if not parts or len({row.reading for row in rows}) < 2:
         return ()
-    try:
-        reversed_plan = acceleration_plan(mechanism, position.positions, position.directions, position.velocity,
-                                          plan.scale, coriolis_reversed=True)
-    except ParallelLinesError:  # its lines cross nowhere: no plan a hand could have drawn
-        return ()
-    for row in rows:
-        segment = _segment_of(position, row)
-        if segment is None or not all(letter in reversed_plan.points for letter in segment):
-            return ()
-        there = segment_millimetres(reversed_plan, segment)
-        if abs(_hand_millimetres(row) - there) > max(FAR_OFF_PRECISIONS * precision,
-                                                     UNIFORM_SLIP_PERCENT / 100.0 * there):
-            return ()
-    return parts
+    for reversed_ends in [tuple(parts), *([(end,) for end in parts] if len(parts) > 1 else [])]:
+        try:
+            reversed_plan = acceleration_plan(mechanism, position.positions, position.directions, position.velocity,
+                                              plan.scale, coriolis_reversed=reversed_ends)
+        except ParallelLinesError:  # its lines cross nowhere: no plan a hand could have drawn
+            continue
+        if all(_fits(row, reversed_plan, position, precision) for row in rows):
+            return tuple(parts[end] for end in reversed_ends)
+    return ()
+
+
+def _fits(row: ErrorRow, plan: Plan, position: VelocityPosition, precision: float) -> bool:
+    """Whether a hand reading is its segment on ``plan`` to within the drafting precision twice or
+    :data:`UNIFORM_SLIP_PERCENT`."""
+    segment = _segment_of(position, row)
+    if segment is None or not all(letter in plan.points for letter in segment):
+        return False
+    there = segment_millimetres(plan, segment)
+    return abs(_hand_millimetres(row) - there) <= max(FAR_OFF_PRECISIONS * precision, UNIFORM_SLIP_PERCENT / 100.0 * there)
 
 
 def _tangential(position: VelocityPosition, row: ErrorRow) -> tuple[str, float, float] | None:

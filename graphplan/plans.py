@@ -16,7 +16,7 @@ the scale turns it into millimetres once the plan's size is known.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Literal, get_args
 
@@ -247,20 +247,20 @@ class Builder:
     turns_with: dict[int, int] = field(default_factory=dict)
     slide_ends: dict[int, tuple[str, str]] = field(default_factory=dict)
     auxiliary: dict[str, complex] = field(default_factory=dict)
-    # The Coriolis parts laid off against 2·ω × v_rel, as a student who turned v_rel the wrong way did: the plan whose
-    # lengths such a student's readings are (:func:`graphplan.misreadings.slips`).
-    coriolis_reversed: bool = False
+    # The Coriolis parts, by the letters of their ends (k, k5), laid off against 2·ω × v_rel, as a student who turned
+    # v_rel the wrong way did: the plan whose lengths such a student's readings are (:mod:`graphplan.misreadings`).
+    coriolis_reversed: frozenset[str] = frozenset()
 
     def image(self, point: str) -> complex:
         return self.points[self.images[point]]
 
-    def coriolis(self, omega: float, relative: complex) -> complex:
-        """The Coriolis part as this board lays it off: 2·ω × v_rel (:func:`graphplan.groups.sliding.coriolis`),
-        or against it where the board lays them off reversed."""
+    def lay_coriolis(self, letter: str, start: str, omega: float, relative: complex) -> str:
+        """The end of the Coriolis part 2·ω × v_rel (:func:`graphplan.groups.sliding.coriolis`) laid off from the
+        plan's point ``start``, marked ``letter``; laid off against it where the board reverses that letter's."""
         from .groups.sliding import coriolis
 
         laid = coriolis(omega, relative)
-        return -laid if self.coriolis_reversed else laid
+        return self.mark(letter, self.points[start] + (-laid if letter in self.coriolis_reversed else laid))
 
     def guide_line(self, guide) -> tuple[complex, complex, int]:
         """A guide at this instant: a point of it (m), its unit direction, the link that carries it."""
@@ -392,11 +392,13 @@ def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], direct
 
 
 def acceleration_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
-                      velocities: Plan, scale: float | None = None, coriolis_reversed: bool = False) -> Plan:
+                      velocities: Plan, scale: float | None = None,
+                      coriolis_reversed: Collection[str] = frozenset()) -> Plan:
     """The acceleration plan of the same instant, using ω and relative velocities read off ``velocities``; with
-    ``coriolis_reversed``, the plan of a hand that laid every Coriolis part off the wrong way."""
+    ``coriolis_reversed`` (the letters of Coriolis parts' ends), the plan of a hand that laid those parts off the
+    wrong way."""
     board = Builder("acceleration", mechanism, positions, directions, _size(positions),
-                    coriolis_reversed=coriolis_reversed)
+                    coriolis_reversed=frozenset(coriolis_reversed))
     _frame_at_pole(board, mechanism)
     for unit in mechanism.units:
         unit.solver.construct_acceleration(board, velocities)  # type: ignore[union-attr]

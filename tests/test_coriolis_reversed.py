@@ -16,7 +16,9 @@ import pytest
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.check import segment_millimetres
 from graphplan.cli import main
+from graphplan.plans import acceleration_plan
 
 SCENE = Path("fixtures/quick_return_slotted_lever.toml")
 NUMBER = 4
@@ -106,3 +108,31 @@ def _toml(tables: dict) -> str:
     readings = tables["measured"][str(NUMBER)]["acceleration"]
     given = ", ".join(f"{name} = {value}" for name, value in readings.items())
     return f"{text}\n[measured.{NUMBER}]\nacceleration = {{ {given} }}\n"
+
+
+TANGENT = Path("fixtures/tangent_mechanism_prp.toml")
+
+
+def _reversed_readings(reversed_parts: set[str]) -> tuple[dict, str]:
+    """The tangent mechanism's position with plans, its Coriolis parts named in ``reversed_parts`` laid off
+    reversed: its readings (mm, to 0.1) taken off that plan, given as a student gives them, and the warning told."""
+    tables = tomllib.loads(TANGENT.read_text(encoding="utf-8"))
+    analysis = analyse(graphplan.load(tables))
+    position = analysis.plans[0]
+    plan = position.acceleration
+    ends = {vector.end for step in plan.steps for vector in step.vectors if vector.meaning in reversed_parts}
+    drawn = acceleration_plan(analysis.mechanism, position.positions, position.directions, position.velocity,
+                              plan.scale, coriolis_reversed=ends)
+    readings = {"".join(reading.segment): round(segment_millimetres(drawn, reading.segment), 1)
+                for reading in position.readings if reading.plan == "acceleration"}
+    tables["measured"] = {str(position.number): {"acceleration": readings}}
+    [told] = _far_off_warnings(tables)
+    return readings, told
+
+
+@pytest.mark.parametrize("reversed_parts", [{"aA4A3ᵏ", "aBB4ᵏ"}, {"aBB4ᵏ"}, {"aA4A3ᵏ"}])
+def test_of_two_coriolis_parts_the_ones_laid_off_reversed_are_named(reversed_parts):
+    """The tangent mechanism lays off two Coriolis parts; a hand may turn one wrong and the other right."""
+    _, told = _reversed_readings(reversed_parts)
+    named = told.split("fits the plan with ")[1].split(" laid off the other way")[0]
+    assert set(named.split(" and ")) == reversed_parts

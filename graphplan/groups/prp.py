@@ -191,8 +191,8 @@ class PRP(Group):
             start = under
             if slider in turning:
                 v_rel = velocities.value(b_name) - velocities.points[under]
-                start = board.mark(coriolis_letter(board, slider),
-                                   board.points[under] + board.coriolis(velocities.rates.get(carrier, 0.0), v_rel))
+                start = board.lay_coriolis(coriolis_letter(board, slider), under, velocities.rates.get(carrier, 0.0),
+                                           v_rel)
                 laid.append(LaidVector(under, start, f"a{b_name}{g}ᵏ"))
                 marks.append(start)
                 term += f" + a{b_name}{g}ᵏ"

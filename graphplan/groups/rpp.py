@@ -172,10 +172,9 @@ class RPP(Group):
         if self.coriolis_sliders(board.mechanism):
             v_slot = velocities.points[coincident] - velocities.value(a_name)
             v_guide = velocities.points[coincident] - velocities.points[ag]
-            k_slot = board.mark(coriolis_letter(board, block),
-                                board.points[a] + board.coriolis(velocities.rates[slotted], v_slot))
-            k_guide = board.mark(coriolis_letter(board, slotted),
-                                 board.points[ag] + board.coriolis(velocities.rates.get(carrier, 0.0), v_guide))
+            k_slot = board.lay_coriolis(coriolis_letter(board, block), a, velocities.rates[slotted], v_slot)
+            k_guide = board.lay_coriolis(coriolis_letter(board, slotted), ag, velocities.rates.get(carrier, 0.0),
+                                         v_guide)
             laid += [LaidVector(a, k_slot, f"a{point}{pin}ᵏ"), LaidVector(ag, k_guide, f"a{point}{g}ᵏ")]
             equation = [f"{equation[0]} + a{point}{pin}ᵏ", f"{equation[1]} + a{point}{g}ᵏ"]
         value, angle = board.cross(Line(board.points[k_slot], along_slot, on_slot.text),

@@ -219,7 +219,7 @@ class RPR(Group):
         a, c = board.images[a_name], board.images[c_name]
         omega = velocities.rates[lever]
         v_rel = velocities.value(self.coincident) - velocities.value(a_name)
-        k = board.mark(coriolis_letter(board, block), board.points[a] + board.coriolis(omega, v_rel))
+        k = board.lay_coriolis(coriolis_letter(board, block), a, omega, v_rel)
         normal = board.mark(f"n{lever}", board.points[c] - omega**2 * (a_pos - c_pos))
         a4, angle, along, slide, across_ca = self._close(board, k, normal)
         pin, point = f"{a_name}{block}", self.coincident

@@ -45,8 +45,7 @@ def coriolis_end(board: Builder, velocities: Plan, point: str, slider: int, carr
     """The end of the Coriolis part 2·ωg × vPPg laid from ``on_guide`` (the image of the guide link's point under
     the pin ``point``), vPPg read off the velocity plan; marked and returned."""
     relative = velocities.value(point) - velocities.points[on_guide]
-    return board.mark(coriolis_letter(board, slider),
-                      board.points[on_guide] + board.coriolis(velocities.rates.get(carrier, 0.0), relative))
+    return board.lay_coriolis(coriolis_letter(board, slider), on_guide, velocities.rates.get(carrier, 0.0), relative)
 
 
 def guide_meaning(guide: Guide) -> LineMeaning:
