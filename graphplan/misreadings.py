@@ -15,6 +15,7 @@ the round value near it, with how close the readings come there.
 
 from __future__ import annotations
 
+import itertools
 import math
 import statistics
 from collections.abc import Iterable, Iterator, Mapping, Sequence
@@ -340,11 +341,12 @@ def coriolis_reversed(mechanism: Mechanism, position: VelocityPosition, measured
                       far: list[tuple[ErrorRow, float]], precision: float) -> tuple[str, ...]:
     """The Coriolis parts of ``position``'s acceleration plan (``aA4A3ᵏ``) that its hand readings, one at least far
     off the plan as constructed, find laid off against 2·ω × v_rel: every reading is its segment on the plan built
-    so, as closely as a careful drawing keeps to the construction (the drafting precision twice, or
-    :data:`UNIFORM_SLIP_PERCENT`); all the parts tried first, then each alone.  None where no such plan fits.
+    so (:func:`_fits`), and two readings at least tell that plan from the one constructed (one may fit by chance;
+    πa, the same on both, tells nothing).  The fewest parts that do so, each alone first; none where no such plan
+    fits.
 
     Turning v_rel the wrong way is the slip the Coriolis part is known for: every segment from it on is off, and
-    was told as so many lengths misread.  Two readings at least, since one may fit by chance."""
+    was told as so many lengths misread."""
     plan = position.plans.get("acceleration")
     if plan is None or not any(_plan_of(row) == "acceleration" for row, _ in far):
         return ()
@@ -353,25 +355,39 @@ def coriolis_reversed(mechanism: Mechanism, position: VelocityPosition, measured
     rows = [row for row, _ in measured if _plan_of(row) == "acceleration"]
     if not parts or len({row.reading for row in rows}) < 2:
         return ()
-    for reversed_ends in [tuple(parts), *([(end,) for end in parts] if len(parts) > 1 else [])]:
-        try:
-            reversed_plan = acceleration_plan(mechanism, position.positions, position.directions, position.velocity,
-                                              plan.scale, coriolis_reversed=reversed_ends)
-        except ParallelLinesError:  # its lines cross nowhere: no plan a hand could have drawn
-            continue
-        if all(_fits(row, reversed_plan, position, precision) for row in rows):
-            return tuple(parts[end] for end in reversed_ends)
+    for count in range(1, len(parts) + 1):
+        for reversed_ends in itertools.combinations(parts, count):
+            try:
+                reversed_plan = acceleration_plan(mechanism, position.positions, position.directions,
+                                                  position.velocity, plan.scale, coriolis_reversed=reversed_ends)
+            except ParallelLinesError:  # its lines cross nowhere: no plan a hand could have drawn
+                continue
+            telling = {row.reading for row in rows if not _same_length(row, plan, reversed_plan, position, precision)}
+            if len(telling) >= 2 and all(_fits(row, reversed_plan, position, precision) for row in rows):
+                return tuple(parts[end] for end in reversed_ends)
     return ()
 
 
+def _same_length(row: ErrorRow, plan: Plan, other: Plan, position: VelocityPosition, precision: float) -> bool:
+    """Whether a reading's segment is as long on ``plan`` and ``other``, to within what :func:`_fits` allows."""
+    segment = _segment_of(position, row)
+    if segment is None or not all(letter in other.points for letter in segment):
+        return True
+    return _within(segment_millimetres(plan, segment), segment_millimetres(other, segment), precision)
+
+
+def _within(read: float, there: float, precision: float) -> bool:
+    """Whether a length ``read`` is ``there`` as closely as a careful drawing keeps to the construction: the drafting
+    precision twice, or :data:`UNIFORM_SLIP_PERCENT`."""
+    return abs(read - there) <= max(FAR_OFF_PRECISIONS * precision, UNIFORM_SLIP_PERCENT / 100.0 * there)
+
+
 def _fits(row: ErrorRow, plan: Plan, position: VelocityPosition, precision: float) -> bool:
-    """Whether a hand reading is its segment on ``plan`` to within the drafting precision twice or
-    :data:`UNIFORM_SLIP_PERCENT`."""
+    """Whether a hand reading is its segment on ``plan`` (:func:`_within`)."""
     segment = _segment_of(position, row)
     if segment is None or not all(letter in plan.points for letter in segment):
         return False
-    there = segment_millimetres(plan, segment)
-    return abs(_hand_millimetres(row) - there) <= max(FAR_OFF_PRECISIONS * precision, UNIFORM_SLIP_PERCENT / 100.0 * there)
+    return _within(_hand_millimetres(row), segment_millimetres(plan, segment), precision)
 
 
 def _tangential(position: VelocityPosition, row: ErrorRow) -> tuple[str, float, float] | None:
@@ -817,11 +833,14 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition], sheets: She
         if found.on_sheet is not None:
             details.append(on_sheet_detail(found.on_sheet, position.number))
         if found.coriolis_reversed:
+            many = len(found.coriolis_parts) > 1
             details.append(f"every reading of the acceleration plan ({', '.join(map(_name, found.coriolis_reversed))}) "
-                           f"fits the plan with {' and '.join(found.coriolis_parts)} laid off the other way, not the "
-                           f"plan as constructed (each to {FAR_OFF_PRECISIONS * precision:g} mm or "
-                           f"{UNIFORM_SLIP_PERCENT:g} %): 2·ω × v_rel is v_rel turned by 90° in the sense of ω; the "
-                           f"Coriolis {'part' if len(found.coriolis_parts) == 1 else 'parts'} laid off reversed?")
+                           f"fits the plan with the Coriolis component{'s' if many else ''} "
+                           f"{' and '.join(found.coriolis_parts)} laid off the other way, not the plan as constructed "
+                           f"(each to {FAR_OFF_PRECISIONS * precision:g} mm or {UNIFORM_SLIP_PERCENT:g} %): 2·ω × v_rel "
+                           f"has the direction of v_rel turned by 90° in the sense of ω; "
+                           f"{'were the Coriolis components' if many else 'was the Coriolis component'} laid off "
+                           f"reversed?")
         for rescaled in found.rescaled:
             typed = typed_unit(rescaled.ratio)
             if typed is not None:

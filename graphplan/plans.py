@@ -250,6 +250,7 @@ class Builder:
     # The Coriolis parts, by the letters of their ends (k, k5), laid off against 2·ω × v_rel, as a student who turned
     # v_rel the wrong way did: the plan whose lengths such a student's readings are (:mod:`graphplan.misreadings`).
     coriolis_reversed: frozenset[str] = frozenset()
+    coriolis_laid: list[str] = field(default_factory=list)
 
     def image(self, point: str) -> complex:
         return self.points[self.images[point]]
@@ -260,6 +261,7 @@ class Builder:
         from .groups.sliding import coriolis
 
         laid = coriolis(omega, relative)
+        self.coriolis_laid.append(letter)
         return self.mark(letter, self.points[start] + (-laid if letter in self.coriolis_reversed else laid))
 
     def guide_line(self, guide) -> tuple[complex, complex, int]:
@@ -397,12 +399,19 @@ def acceleration_plan(mechanism: Mechanism, positions: Mapping[str, complex], di
     """The acceleration plan of the same instant, using ω and relative velocities read off ``velocities``; with
     ``coriolis_reversed`` (the letters of Coriolis parts' ends), the plan of a hand that laid those parts off the
     wrong way."""
+    # A string would be taken letter by letter ("k5" as k and 5), True as no collection at all.
+    if isinstance(coriolis_reversed, str | bool) or not isinstance(coriolis_reversed, Collection):
+        raise TypeError(f"coriolis_reversed is a collection of the letters of Coriolis parts' ends, such as "
+                        f"['k'] or ['k3', 'k5'] (got {coriolis_reversed!r})")
     board = Builder("acceleration", mechanism, positions, directions, _size(positions),
                     coriolis_reversed=frozenset(coriolis_reversed))
     _frame_at_pole(board, mechanism)
     for unit in mechanism.units:
         unit.solver.construct_acceleration(board, velocities)  # type: ignore[union-attr]
         _place_named(board, mechanism, unit.points)
+    if unknown := sorted(board.coriolis_reversed.difference(board.coriolis_laid)):
+        raise ValueError(f"coriolis_reversed: {', '.join(unknown)} ends no Coriolis part of the plan, whose parts end "
+                         f"at {', '.join(board.coriolis_laid) or 'none'}")
     rates = _read_rates(board, mechanism)
     return _finish(board, rates, scale, mechanism, pole_mm_key="acceleration")
 

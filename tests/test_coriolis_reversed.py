@@ -75,8 +75,9 @@ def test_readings_of_a_plan_with_the_coriolis_part_reversed_are_told_so():
     assert abs(reversed_plan["pa4"] - right["pa4"]) > 5.0  # far off the construction, and so told
     [told] = _far_off_warnings(_scene(reversed_plan))
     assert told.startswith(f"measured.{NUMBER}: every reading of the acceleration plan (pa4, ka4, n4a4, pd) fits the "
-                           "plan with aA4A3ᵏ laid off the other way")
-    assert "2·ω × v_rel is v_rel turned by 90° in the sense of ω" in told
+                           "plan with the Coriolis component aA4A3ᵏ laid off the other way")
+    assert "2·ω × v_rel has the direction of v_rel turned by 90° in the sense of ω" in told
+    assert told.endswith("was the Coriolis component laid off reversed?")
     assert "misread" not in told and "taken for" not in told and "times the plan" not in told
 
 
@@ -130,9 +131,69 @@ def _reversed_readings(reversed_parts: set[str]) -> tuple[dict, str]:
     return readings, told
 
 
-@pytest.mark.parametrize("reversed_parts", [{"aA4A3ᵏ", "aBB4ᵏ"}, {"aBB4ᵏ"}, {"aA4A3ᵏ"}])
+@pytest.mark.parametrize("reversed_parts", [{"aA4A3ᵏ", "aBB4ᵏ"}, {"aA4A3ᵏ"}])
 def test_of_two_coriolis_parts_the_ones_laid_off_reversed_are_named(reversed_parts):
     """The tangent mechanism lays off two Coriolis parts; a hand may turn one wrong and the other right."""
     _, told = _reversed_readings(reversed_parts)
-    named = told.split("fits the plan with ")[1].split(" laid off the other way")[0]
+    many = len(reversed_parts) > 1
+    named = told.split(f"fits the plan with the Coriolis component{'s' if many else ''} ")[1].split(" laid off")[0]
     assert set(named.split(" and ")) == reversed_parts
+    assert told.endswith("were the Coriolis components laid off reversed?" if many
+                         else "was the Coriolis component laid off reversed?")
+
+
+def test_a_misread_length_beside_readings_the_coriolis_part_leaves_alone_is_told_misread():
+    """πa is as long on either plan: beside it, pd = 67 mm (39.41 as constructed, 69.94 with the Coriolis part
+    reversed) is one length misread, which one reading that tells the plans apart cannot tell from chance."""
+    for readings in ({"pa": 100.0, "pd": 67.0}, {"pa": 100.0, "ps2": 41.5, "pd": 70.0}):
+        [told] = _far_off_warnings(_scene(readings))
+        assert "laid off the other way" not in told
+        assert f"pd = {readings['pd']:g} mm gives aD" in told
+
+
+def test_one_reading_alone_that_tells_a_part_reversed_is_no_proof_of_it():
+    """aBB4ᵏ reversed alone moves pb alone of the tangent mechanism's segments: one length off, which chance may
+    make (it is, to the drafting precision, the plan's pn4 too), is not told a part reversed."""
+    _, told = _reversed_readings({"aBB4ᵏ"})
+    assert "laid off the other way" not in told and "pb = 24.7 mm" in told
+
+
+def test_readings_that_tell_only_one_of_two_parts_name_that_one():
+    """pa4, pd and n4a4 of the tangent mechanism hang on aA4A3ᵏ alone: aBB4ᵏ reversed too changes none of them, so
+    only aA4A3ᵏ is named (both had been)."""
+    readings, _ = _reversed_readings({"aA4A3ᵏ", "aBB4ᵏ"})
+    tables = tomllib.loads(TANGENT.read_text(encoding="utf-8"))
+    number = analyse(graphplan.load(tables)).plans[0].number
+    tables["measured"] = {str(number): {"acceleration": {name: readings[name] for name in ("pa4", "pd", "n4a4")}}}
+    [told] = _far_off_warnings(tables)
+    assert "with the Coriolis component aA4A3ᵏ laid off the other way" in told
+
+
+@pytest.mark.parametrize(("locale", "words"), [
+    ("en", "the Coriolis components aA4A3ᵏ, aBB4ᵏ laid off the other way"),
+    ("ru", "кориолисовы ускорения aA4A3ᵏ, aBB4ᵏ отложены в обратную сторону"),
+    ("zh", "（pa、ps2、pa4、")])
+def test_two_parts_reversed_are_told_in_the_plural_in_the_error_table(tmp_path, locale, words):
+    readings, _ = _reversed_readings({"aA4A3ᵏ", "aBB4ᵏ"})
+    tables = tomllib.loads(TANGENT.read_text(encoding="utf-8"))
+    number = analyse(graphplan.load(tables)).plans[0].number
+    text = TANGENT.read_text(encoding="utf-8").replace('locale  = "en"', f'locale  = "{locale}"')
+    assert f'locale  = "{locale}"' in text
+    given = ", ".join(f"{name} = {value}" for name, value in readings.items())
+    path = tmp_path / "tangent.toml"
+    path.write_text(f"{text}\n[measured.{number}]\nacceleration = {{ {given} }}\n", encoding="utf-8")
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "errors", "--sheet", "none"]) == 0
+    assert words in (tmp_path / "out" / "errors.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(("given", "error", "message"), [
+    (True, TypeError, "a collection of the letters of Coriolis parts' ends"),
+    ("k5", TypeError, "a collection of the letters"),
+    (["zz"], ValueError, "zz ends no Coriolis part of the plan, whose parts end at k3, k5")])
+def test_a_reversed_part_is_named_by_the_letters_the_plan_ends_them_at(given, error, message):
+    """coriolis_reversed="k5" reversed nothing (taken as k and 5), and ["zz"] nothing, without a word."""
+    analysis = analyse(graphplan.load(TANGENT))
+    position = analysis.plans[0]
+    with pytest.raises(error, match=message):
+        acceleration_plan(analysis.mechanism, position.positions, position.directions, position.velocity,
+                          coriolis_reversed=given)

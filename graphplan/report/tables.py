@@ -137,8 +137,9 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     if found.on_sheet is not None:
         lines.append(_on_sheet_line(found.on_sheet, plan.number, text, mark, in_note))
     if found.coriolis_reversed:
-        lines.append(text["errors_coriolis_reversed"].format(
-            readings=", ".join(reading.split(" = ")[0] for reading in found.coriolis_reversed),
+        lines.append(text["errors_coriolis_reversed_many" if len(found.coriolis_parts) > 1
+                          else "errors_coriolis_reversed"].format(
+            readings=text["enumeration"].join(reading.split(" = ")[0] for reading in found.coriolis_reversed),
             parts=text["enumeration"].join(found.coriolis_parts), percent=f"{UNIFORM_SLIP_PERCENT:g}",
             millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
     for rescaled in found.rescaled:
