@@ -166,3 +166,18 @@ def test_no_two_labels_of_a_drawing_cover_one_another(fixture):
                 assert not cover_one_another([item for item in layer.items if isinstance(item, Text)]), (
                     f"{made.stem}: {layer.name}")
 
+
+
+def test_two_names_in_a_crowded_star_of_arms_take_a_leader_or_a_line_rather_than_one_another():
+    """The triad's force sheet of position 2 draws seventeen arms from Σ6, beside F; every spot round h8 and h13
+    covered another name's leader, which cost as much as covering a name, and the two stood one on the other."""
+    scene = graphplan.load(Path(__file__).parent / "scenes" / "triad_crowded_star_zh.toml")
+    analysis = analyse(scene)
+    [position] = [plan for plan in analysis.plans if plan.number == 2]
+    drawing = force_layout.layout(force_sheet(analysis, position))
+    bodies = [layer for layer in drawing if layer.name.startswith("body-III") and layer.name.endswith("labels")]
+    assert bodies
+    for layer in bodies:
+        names = [item for item in layer.items if isinstance(item, Text)]
+        assert {"h8", "h13"} <= {name.text for name in names}
+        assert not cover_one_another(names), layer.name

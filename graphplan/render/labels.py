@@ -637,6 +637,25 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 spot, best, kind = farther, int(np.argmin(farther.cost)), "far"
         put(index, spot, best, kind)
 
+    def off_other_labels(index: int) -> None:
+        """Set the label of ``index``, left on another label after every mend, at the cheapest spot near or far whose
+        box covers no other label, where one does: a box on a thin leader still reads, one on another box neither
+        (two arms' names in the star of arms at a triad's Σ6, where every spot covered a leader, stood one on the
+        other, as costly as it)."""
+        others = others_than(placed_boxes, index)
+        if not crossing(np.array([placed_boxes[index]]), np.array([placed_boxes[index].bounds]), others)[0]:
+            return
+        best = None
+        for kind in ("near", "far"):
+            spot = spots(index, kind)
+            on_labels = crossing(shapely.box(*spot.boxes.T), spot.boxes, others)
+            cost = np.where(on_labels > 0, np.inf, spot.cost)
+            cheapest = int(np.argmin(cost))
+            if np.isfinite(cost[cheapest]) and (best is None or cost[cheapest] < best[0]):
+                best = (cost[cheapest], spot, cheapest, kind)
+        if best is not None:
+            put(index, *best[1:])
+
     def saved(*indices: int) -> list:
         return [(k, texts[k], placed_boxes[k], leader_lines.get(k), paid[k], where[k]) for k in indices]
 
@@ -966,6 +985,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         for index in order:
             if len(shafts_met) and where[index][3] > 0 and paid[index] < OVERLAP:
                 reach_out(index, across_shafts=True)
+        # Those on another label even so take a spot on a leader, or on lines, rather.
+        for index in order:
+            if paid[index] >= OVERLAP:
+                off_other_labels(index)
 
     farther = np.broadcast_to(np.asarray(reach_farther, dtype=bool), len(anchors))
 
