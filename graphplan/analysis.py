@@ -239,14 +239,17 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every), motion=motion, numbers=positions.numbers)
-    # A load judged against masses typed in grams, or against inertia loads of a speed typed in rev/min or mm/s (some
-    # hundred or a million times too large), would be told a slip of its own it is not.
+    # A load judged against masses typed in grams, against inertia loads of a speed typed in rev/min or mm/s (some
+    # hundred or a million times too large), or against weights' moments over lengths typed in mm (a thousand times
+    # too long), would be told a slip of its own it is not, and its "fix" would make it a thousand times too large.
     mass_slips = masses_in_grams(mechanism, motion) + inertia_too_large(mechanism, motion)
     rpm_slip = speed_in_rpm(mechanism) + velocity_in_millimetres(mechanism)
-    in_order = tuple(sorted(lengths_in_millimetres(motion) + rpm_slip + angles_in_radians(mechanism)
+    length_slips = lengths_in_millimetres(motion)
+    in_order = tuple(sorted(length_slips + rpm_slip + angles_in_radians(mechanism)
                             + mass_slips + centres_as_shares(mechanism, motion)
                             + free_lengths_in_millimetres(mechanism, motion)
-                            + (() if mass_slips or rpm_slip else loads_in_kilonewtons(mechanism, motion))
+                            + (() if mass_slips or rpm_slip or length_slips
+                               else loads_in_kilonewtons(mechanism, motion))
                             + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)

@@ -366,3 +366,22 @@ def test_a_links_inertia_in_another_unit_is_warned_of_by_its_radius_of_gyration(
         told, results, _ = _run(tmp_path, _edited("crank-rocker", "inertia = 0.51", f"inertia = {inertia}"), capsys)
         assert "radius of gyration" not in told
         assert "inertia-too-large" not in {warning["code"] for warning in results["warnings"]}
+
+
+def test_lengths_in_millimetres_are_not_told_again_as_a_load_in_kn(tmp_path):
+    """The ratchet typed in mm (every length a thousand times): its weights' moments grew a thousandfold over links
+    325 m long, and the rocker's 1500 N·m was told "kN·m typed for N·m? … loads[0].value = 1.5e+06", a fix that
+    makes the load a thousand times too large."""
+    import graphplan
+    from graphplan.analysis import analyse
+
+    text = Path("fixtures/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    text = text[:text.index("[measured.5]")] + text[text.index("[drawing]"):]
+    for old, new in (("C = [0.0, 0.55]", "C = [0.0, 550.0]"), ("length  = 0.175", "length  = 175.0"),
+                     ("lengths  = [0.55, 0.325]", "lengths  = [550.0, 325.0]"), ("at = 0.08", "at = 80.0"),
+                     ("at = 0.24", "at = 240.0"), ("offset = 0.125", "offset = 125.0"), ("at = 0.14", "at = 140.0"),
+                     ("length_scale      = 0.0025", "length_scale      = 2.5")):
+        assert old in text
+        text = text.replace(old, new)
+    codes = [warning.code for warning in analyse(graphplan.load_text(text)).warnings]
+    assert "lengths-in-mm" in codes and "load-in-kn" not in codes
