@@ -135,11 +135,22 @@ class NamedValues(dict):
         self.told = told
 
     def __missing__(self, key: object) -> Any:
-        near = difflib.get_close_matches(str(key), list(self), n=1)
         hint = lookalike_hint(key, self) if isinstance(key, str) else ""
-        if not hint and near:
-            hint = f"; did you mean {near[0]!r}?"
+        if not hint:
+            hint = self._nearest(str(key))
         raise KeyError(f"{key!r} {self.told} {', '.join(self) or 'none'}{hint}")
+
+    def _nearest(self, key: str) -> str:
+        """"; did you mean …?" with the name ``key`` likely meant, or "": a reaction named the other way round
+        (R32 for R23, which difflib took for R34), a name as the tables print it (ω4 for omega4) or in another
+        case (vb for VB), else the nearest in spelling."""
+        pair = re.fullmatch(r"[Rr](\d)(\d)", key)
+        if pair and (turned := f"R{pair[2]}{pair[1]}") in self:
+            return f"; did you mean {turned!r} (R{pair[1]}{pair[2]} = −{turned})?"
+        spelled = key.replace("ω", "omega").replace("ε", "epsilon")
+        same = [name for name in self if name.casefold() == spelled.casefold()]
+        near = same or difflib.get_close_matches(spelled, list(self), n=1)
+        return f"; did you mean {near[0]!r}?" if near else ""
 
     def __reduce__(self):  # copied or pickled with what it says of a missing name
         return (type(self), (dict(self), self.told))

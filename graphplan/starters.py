@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 import re
 from importlib import resources
 
@@ -22,15 +23,20 @@ _NAMED_WORDS = {"ram": "starter_line_ram"}
 def starter(kind: str, locale: str = "en") -> str:
     """The commented scene of ``kind`` (one of :data:`KINDS`), its drawings and note in ``locale``: its title and
     the names its note prints in that language (its comments stay English).  The TOML text that ``graphplan new
-    KIND --locale LOCALE`` writes, for :func:`graphplan.load_text`::
+    KIND --locale LOCALE`` writes, for :func:`graphplan.load_text` (the kinds are ``graphplan.starters.KINDS``)::
 
         shaper = graphplan.load_text(graphplan.starter("shaper", "ru"))
         shaper.plan(3).values["VA4A3"]   # the slider's velocity along the rocker, m/s
     """
-    if kind not in KINDS:
-        raise ValueError(f"no starter scene {kind!r}; there are {', '.join(KINDS)}")
-    if locale not in LOCALES:
-        raise ValueError(f"no locale {locale!r}; there are {', '.join(LOCALES)}")
+    for name, value, known in (("kind", kind, KINDS), ("locale", locale, LOCALES)):
+        if not isinstance(value, str):
+            raise TypeError(f"a starter's {name} is one of {', '.join(known)} (got {value!r})")
+        if value not in known:
+            # slider_crank and Shaper are the kinds slider-crank and shaper, as a command line's kind is typed.
+            near = difflib.get_close_matches(value.casefold().replace("_", "-").replace(" ", "-"), known, n=1)
+            hint = f"; did you mean {near[0]!r}?" if near else ""
+            raise ValueError(f"no starter scene {value!r}; there are {', '.join(known)}{hint}" if name == "kind"
+                             else f"no locale {value!r}; there are {', '.join(known)}{hint}")
     text = resources.files("graphplan").joinpath("templates", f"{kind}.toml").read_text(encoding="utf-8")
     words = strings(locale)
     text = re.sub(r'^(title\s*=\s*)"[^"]*"', lambda title: f'{title[1]}"{words[_title_key(kind)]}"', text, count=1,

@@ -293,10 +293,17 @@ def test_a_reaction_the_force_analysis_does_not_find_is_told_with_those_it_does(
     with pytest.raises(KeyError) as missing:
         reactions["R32"]
     told = missing.value.args[0]
-    assert told.startswith("'R32' is no reaction the force analysis finds, which finds ") and "did you mean" in told
+    # R32 is R23 the other way round, not R34, which is nearer in spelling.
+    assert told.startswith("'R32' is no reaction the force analysis finds, which finds ")
+    assert told.endswith("; did you mean 'R23' (R32 = −R23)?")
     assert all(name in told for name in reactions)
     with pytest.raises(KeyError, match="Cyrillic"):
         scene.plan(5).values["VВ"]
+    # As the error tables print them, or in another case.
+    for typed, meant in (("ω4", "omega4"), ("ε3", "epsilon3"), ("vb", "VB"), ("r23", "R23")):
+        values = reactions if typed.startswith("r") else scene.plan(5).values
+        with pytest.raises(KeyError, match=f"did you mean '{meant}'"):
+            values[typed]
     for kept in (copy.deepcopy(reactions), pickle.loads(pickle.dumps(reactions))):
         assert kept.keys() == reactions.keys()
         with pytest.raises(KeyError, match="is no reaction"):

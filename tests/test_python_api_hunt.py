@@ -282,3 +282,16 @@ def test_a_scene_mistyped_in_its_units_is_warned_of_in_python_as_on_the_command_
         warnings.simplefilter("error")
         graphplan.load(RATCHET).analyse()
         graphplan.load(RATCHET).plan(5)
+
+
+@pytest.mark.parametrize(("kind", "locale", "error", "told"), [
+    ("slider_crank", "en", ValueError, "did you mean 'slider-crank'?"),
+    ("Shaper", "en", ValueError, "did you mean 'shaper'?"),
+    ("shaper", "RU", ValueError, "no locale 'RU'; there are en, ru, zh; did you mean 'ru'?"),
+    (3, "en", TypeError, r"a starter's kind is one of crank-rocker, .* \(got 3\)"),
+    ("shaper", None, TypeError, r"a starter's locale is one of en, ru, zh \(got None\)")])
+def test_a_starter_asked_for_wrongly_is_told_the_kind_or_locale_meant(kind, locale, error, told):
+    """graphplan.starter("slider_crank") was told only the kinds there are; starter(3) raised a ValueError."""
+    with pytest.raises(error, match=told):
+        graphplan.starter(kind, locale)
+    assert graphplan.load_text(graphplan.starter("slider-crank")).title
