@@ -151,6 +151,21 @@ class PositionPlans:
                                 self.position.acceleration))
 
     @cached_property
+    def velocity_drawing(self) -> Drawing:
+        """The velocity plan alone, under its caption (μV): a report's figure, the plan sheet's without the
+        mechanism and the acceleration plan."""
+        from .render.drawings import plan_alone_svg
+
+        return Drawing(plan_alone_svg(self._drawn, self.position, "velocity"))
+
+    @cached_property
+    def acceleration_drawing(self) -> Drawing:
+        """The acceleration plan alone, under its caption (μa), as :attr:`velocity_drawing` is the velocity plan."""
+        from .render.drawings import plan_alone_svg
+
+        return Drawing(plan_alone_svg(self._drawn, self.position, "acceleration"))
+
+    @cached_property
     def forces_drawing(self) -> Drawing | None:
         """The force sheet, or None when the scene has no masses and no loads."""
         if self.position.forces is None:

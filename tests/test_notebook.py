@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import re
 from pathlib import Path
 from types import MappingProxyType
 from xml.etree import ElementTree
@@ -308,3 +309,17 @@ def test_a_reaction_the_force_analysis_does_not_find_is_told_with_those_it_does(
         assert kept.keys() == reactions.keys()
         with pytest.raises(KeyError, match="is no reaction"):
             kept["R32"]
+
+
+def test_each_plan_alone_is_a_drawing_for_a_report(scene):
+    """A report's figure of the velocity plan had to be cut out of the plan sheet by hand: each plan is now a
+    drawing of its own, under its caption, with no mechanism (no μl) and not the other plan."""
+    five = scene.plan(5)
+    velocity, acceleration = flat(five.velocity_drawing.svg), flat(five.acceleration_drawing.svg)
+    assert "μV" in velocity and "μa" not in velocity and "μl" not in velocity
+    assert "μa" in acceleration and "μV" not in acceleration and "μl" not in acceleration
+    sheet = flat(five.drawing.svg)
+    # The captions' scales are the plan sheet's own.
+    for part, symbol in ((velocity, "μV"), (acceleration, "μa")):
+        [scale] = re.findall(f"{symbol} = [^<]+", part)
+        assert scale in sheet

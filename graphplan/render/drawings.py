@@ -423,6 +423,15 @@ def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, accel
     return _svg(analysis, plans.layout(plan_sheet(analysis, index, velocity, acceleration)))
 
 
+def plan_alone_svg(analysis: Analysis, position: PlanPosition, kind: str) -> str:
+    """The SVG text of ``position``'s velocity or acceleration plan (``kind``) alone, with its caption: a figure of a
+    report, the plan sheet's drawing without the mechanism and the other plan."""
+    sheet = dataclasses.replace(plan_sheet(analysis, position.index, position.velocity, position.acceleration),
+                                drawings=(kind,), title=plan_sheet_title(strings(analysis.scene.locale), (kind,),
+                                                                         position.number))
+    return _svg(analysis, plans.layout(sheet))
+
+
 def plan_sheet_title(text: Mapping[str, str], shown: tuple[str, ...], number: int) -> str:
     """The title of a position's plan sheet holding the plans ``shown``: both, or the one drawn (under --only
     velocity, "Velocity and acceleration plans" stood over a sheet with no acceleration plan)."""
