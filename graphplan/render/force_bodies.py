@@ -245,9 +245,9 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
               Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
               Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)]
     # Its title and scales stay with the group; its equations, under its title again, may go on after it.
-    parted = (Drawing(f"body-{key}", layers, tuple(caption[:2])),
+    parted = (Drawing(f"body-{key}", layers, tuple(caption[:2]), labels_crowded=labels.crowded),
               Drawing(f"equations-{key}", [], (caption[0], *caption[2:]))) if len(caption) > 2 else None
-    return Drawing(f"body-{key}", layers, tuple(caption), parted)
+    return Drawing(f"body-{key}", layers, tuple(caption), parted, labels_crowded=labels.crowded)
 
 
 def _along_lines(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]],
@@ -358,11 +358,12 @@ def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...
 
 
 def labels_cover_one_another(drawing: Drawing) -> bool:
-    """Whether two of the labels of a group cut free cover one another: drawn so small that the names of its
-    points, loads and arms find no room apart (:func:`~graphplan.render.labels.place_labels` lets a label cover
-    another only where no spot round its point is clear)."""
-    return cover_one_another([item for layer in drawing.layers if layer.name == f"{drawing.name}-labels"
-                              for item in layer.items if isinstance(item, Text)])
+    """Whether the labels of a group cut free find no room apart: drawn so small that the names of its points,
+    loads and arms cover one another, or one was left on another till the placer's last pass moved it onto lines or
+    a leader (:attr:`~graphplan.render.labels.Placement.crowded`)."""
+    return drawing.labels_crowded or cover_one_another([item for layer in drawing.layers
+                                                        if layer.name == f"{drawing.name}-labels"
+                                                        for item in layer.items if isinstance(item, Text)])
 
 
 def _beside(point: complex, vector: complex, bars: BaseGeometry,

@@ -97,6 +97,8 @@ class Drawing:
     parted: tuple[Drawing, Drawing] | None = None
     # The caption's last lines as they may stand in fewer where its field has the room.
     run_on: RunOn | None = None
+    # Whether its labels found no room apart (:attr:`graphplan.render.labels.Placement.crowded`).
+    labels_crowded: bool = False
 
 
 @dataclass(frozen=True)

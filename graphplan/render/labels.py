@@ -155,6 +155,9 @@ class Placement:
 
     texts: tuple[Text, ...]
     leaders: tuple[Polyline, ...] = ()
+    # Whether some label found no spot clear of the others round its point after every mend, and was moved off the
+    # one it covered onto lines or a leader at the last: the drawing is too small for its names to stand apart.
+    crowded: bool = False
 
 
 class _Spots(NamedTuple):
@@ -653,6 +656,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             cheapest = int(np.argmin(cost))
             if np.isfinite(cost[cheapest]) and (best is None or cost[cheapest] < best[0]):
                 best = (cost[cheapest], spot, cheapest, kind)
+        crowded.append(index)
         if best is not None:
             put(index, *best[1:])
 
@@ -994,10 +998,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 
     order = _most_crowded_first(anchors, at)
     where: dict[int, tuple[str, int, float, float, bool]] = {}
+    crowded: list[int] = []
     letter()
     leaders = tuple(Polyline(_from_its_line(leader_lines[k], anchors[k]), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
-    return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
+    return Placement(tuple(texts[k] for k in range(len(anchors))), leaders, bool(crowded))
 
 
 def _from_its_line(leader: BaseGeometry, anchor: Anchor) -> tuple[tuple[float, float], ...]:
