@@ -14,6 +14,10 @@ from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET, _hung_o
 from graphplan.errors import AssemblyError
 from graphplan.scene import loads
 
+# Scenes given their slips on purpose: scene.analyse() warns of each with a UserWarning, as the command line does,
+# and these tests read the analysis's warnings themselves.
+pytestmark = pytest.mark.filterwarnings(r"ignore:[a-z]+(-[a-z]+)+\b:UserWarning")
+
 ENGINE = Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8")
 ROCKER = Path("fixtures/double_rocker_swing.toml").read_text(encoding="utf-8")
 

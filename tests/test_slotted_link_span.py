@@ -13,9 +13,14 @@ import re
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from graphplan.cli import main
 from graphplan.scene import loads
+
+# Scenes given their slips on purpose: scene.analyse() warns of each with a UserWarning, as the command line does,
+# and these tests read the analysis's warnings themselves.
+pytestmark = pytest.mark.filterwarnings(r"ignore:[a-z]+(-[a-z]+)+\b:UserWarning")
 
 WHITWORTH = """
 [scene]

@@ -14,6 +14,10 @@ from graphplan.cli import main
 from graphplan.scene import loads
 from graphplan.starters import starter
 
+# Scenes given their slips on purpose: scene.analyse() warns of each with a UserWarning, as the command line does,
+# and these tests read the analysis's warnings themselves.
+pytestmark = pytest.mark.filterwarnings(r"ignore:[a-z]+(-[a-z]+)+\b:UserWarning")
+
 SLOW_STROKE = 'working     = { link = 4, sense = "ccw" }'
 QUICK_STROKE = 'working     = { link = 4, sense = "cw" }'
 
