@@ -26,6 +26,7 @@ from .geometry import (
     cross_lines,
     crossing_angle_deg,
     similar_point,
+    turned,
 )
 from .lookalikes import plan_letter
 from .scales import standard_scale
@@ -226,6 +227,11 @@ class Plan:
         return self.points[self.images[point]]
 
 
+def coriolis(omega: float, relative: complex) -> complex:
+    """2·ω × v_rel: the relative velocity turned by 90° in the sense of ω, 2|ω| times as long."""
+    return turned(2.0 * abs(omega) * relative, omega)
+
+
 @dataclass
 class Builder:
     """The drawing board while a plan is being built (mutable only during construction).
@@ -256,10 +262,8 @@ class Builder:
         return self.points[self.images[point]]
 
     def lay_coriolis(self, letter: str, start: str, omega: float, relative: complex) -> str:
-        """The end of the Coriolis part 2·ω × v_rel (:func:`graphplan.groups.sliding.coriolis`) laid off from the
-        plan's point ``start``, marked ``letter``; laid off against it where the board reverses that letter's."""
-        from .groups.sliding import coriolis
-
+        """The end of the Coriolis part 2·ω × v_rel (:func:`coriolis`) laid off from the plan's point ``start``,
+        marked ``letter``; laid off against it where the board reverses that letter's."""
         laid = coriolis(omega, relative)
         self.coriolis_laid.append(letter)
         return self.mark(letter, self.points[start] + (-laid if letter in self.coriolis_reversed else laid))

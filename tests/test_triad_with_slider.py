@@ -22,10 +22,9 @@ from graphplan.analysis import analyse, instant
 from graphplan.cli import main
 from graphplan.errors import AssemblyError, SceneError
 from graphplan.forces import force_plan
-from graphplan.groups.sliding import coriolis
 from graphplan.kinematics import cross
 from graphplan.loads import activity, link_loads, plan_state
-from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.plans import acceleration_plan, coriolis, velocity_plan
 from graphplan.render import positions
 from graphplan.render.drawings import positions_plan
 from graphplan.render.primitives import Circle, Polyline

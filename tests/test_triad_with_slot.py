@@ -25,10 +25,10 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.errors import SceneError
-from graphplan.groups.sliding import coriolis
 from graphplan.groups.triad import Track
 from graphplan.kinematics import cross
 from graphplan.loads import activity
+from graphplan.plans import coriolis
 from graphplan.report.forces import markdown as forces_markdown
 from graphplan.report.note import note_markdown
 

@@ -22,10 +22,10 @@ from test_triad_with_slider import assert_same_triad, forces_at, laid_once, mome
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
-from graphplan.groups.sliding import coriolis
 from graphplan.groups.triad import Track
 from graphplan.kinematics import cross
 from graphplan.loads import activity
+from graphplan.plans import coriolis
 from graphplan.report.note import note_markdown
 
 VARIANT = "ratchet+triad-two-sliders"

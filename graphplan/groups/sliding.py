@@ -10,7 +10,7 @@ triad's ternary link about Assur's point).
 
 from __future__ import annotations
 
-from ..geometry import Line, turned
+from ..geometry import Line
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, image_name
 from .base import Guide
 
@@ -34,11 +34,6 @@ def coriolis_letter(board: Builder, slider: int) -> str:
     if count <= 1 and free_letter(board, "k") == "k":
         return "k"
     return free_letter(board, f"k{slider}")
-
-
-def coriolis(omega: float, relative: complex) -> complex:
-    """2·ω × v_rel: the relative velocity turned by 90° in the sense of ω, 2|ω| times as long."""
-    return turned(2.0 * abs(omega) * relative, omega)
 
 
 def coriolis_end(board: Builder, velocities: Plan, point: str, slider: int, carrier: int, on_guide: str) -> str:
