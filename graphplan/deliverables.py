@@ -384,10 +384,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             # and each drawing stands at its field's foot, which took the sheets' plan sheet for plan_N.svg.
             laid_out = _drawn_alone(panels, f"plan-{plan.number}") if len(shown) == 2 else None
             if laid_out is None:
-                sheet = dataclasses.replace(draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration),
-                                            drawings=("mechanism", *shown), title=draw.plan_sheet_title(
-                                                strings(analysis.scene.locale), shown, plan.number))
-                layers = plan_layout.layout(sheet)
+                layers = plan_layout.layout(draw.plan_sheet_showing(analysis, plan, ("mechanism", *shown)))
             else:
                 layers = list(laid_out.layers)
             found.append(Drawing(f"plan_{plan.number}", layers))

@@ -426,10 +426,16 @@ def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, accel
 def plan_alone_svg(analysis: Analysis, position: PlanPosition, kind: str) -> str:
     """The SVG text of ``position``'s velocity or acceleration plan (``kind``) alone, with its caption: a figure of a
     report, the plan sheet's drawing without the mechanism and the other plan."""
-    sheet = dataclasses.replace(plan_sheet(analysis, position.index, position.velocity, position.acceleration),
-                                drawings=(kind,), title=plan_sheet_title(strings(analysis.scene.locale), (kind,),
+    return _svg(analysis, plans.layout(plan_sheet_showing(analysis, position, (kind,))))
+
+
+def plan_sheet_showing(analysis: Analysis, position: PlanPosition, drawings: tuple[str, ...]) -> plans.PlanSheet:
+    """``position``'s plan sheet (:func:`plan_sheet`) showing ``drawings`` alone (of mechanism, velocity and
+    acceleration), titled by the plans among them (:func:`plan_sheet_title`)."""
+    shown = tuple(name for name in drawings if name != "mechanism")
+    return dataclasses.replace(plan_sheet(analysis, position.index, position.velocity, position.acceleration),
+                               drawings=drawings, title=plan_sheet_title(strings(analysis.scene.locale), shown,
                                                                          position.number))
-    return _svg(analysis, plans.layout(sheet))
 
 
 def plan_sheet_title(text: Mapping[str, str], shown: tuple[str, ...], number: int) -> str:
