@@ -370,10 +370,8 @@ def coriolis_reversed(mechanism: Mechanism, position: VelocityPosition, measured
 
 def _same_length(row: ErrorRow, plan: Plan, other: Plan, position: VelocityPosition, precision: float) -> bool:
     """Whether a reading's segment is as long on ``plan`` and ``other``, to within what :func:`_fits` allows."""
-    segment = _segment_of(position, row)
-    if segment is None or not all(letter in other.points for letter in segment):
-        return True
-    return _within(segment_millimetres(plan, segment), segment_millimetres(other, segment), precision)
+    there = _length_on(other, row, position)
+    return there is None or _within(segment_millimetres(plan, _segment_of(position, row)), there, precision)
 
 
 def _within(read: float, there: float, precision: float) -> bool:
@@ -384,10 +382,17 @@ def _within(read: float, there: float, precision: float) -> bool:
 
 def _fits(row: ErrorRow, plan: Plan, position: VelocityPosition, precision: float) -> bool:
     """Whether a hand reading is its segment on ``plan`` (:func:`_within`)."""
+    there = _length_on(plan, row, position)
+    return there is not None and _within(_hand_millimetres(row), there, precision)
+
+
+def _length_on(plan: Plan, row: ErrorRow, position: VelocityPosition) -> float | None:
+    """The length (mm) on ``plan`` of the segment a measured row was read from; None where the plan has no such
+    segment."""
     segment = _segment_of(position, row)
     if segment is None or not all(letter in plan.points for letter in segment):
-        return False
-    return _within(_hand_millimetres(row), segment_millimetres(plan, segment), precision)
+        return None
+    return segment_millimetres(plan, segment)
 
 
 def _tangential(position: VelocityPosition, row: ErrorRow) -> tuple[str, float, float] | None:
