@@ -52,11 +52,15 @@ def _hand_plan(coriolis_sense: float) -> dict[str, float]:
             "pd": abs(a_lever) * lever_d / per_mm}
 
 
-def _scene(readings: dict[str, float], locale: str = "en") -> dict:
+def _scene(readings: dict[str, float]) -> dict:
     tables = tomllib.loads(SCENE.read_text(encoding="utf-8"))
-    tables["scene"]["locale"] = locale
-    tables["measured"] = {str(NUMBER): {"acceleration": {name: round(value, 1) for name, value in readings.items()}}}
+    tables["measured"] = {str(NUMBER): {"acceleration": _as_read(readings)}}
     return tables
+
+
+def _as_read(readings: dict[str, float]) -> dict[str, float]:
+    """Lengths as a student reads them off the paper: to a tenth of a millimetre."""
+    return {name: round(value, 1) for name, value in readings.items()}
 
 
 def _far_off_warnings(tables: dict) -> list[str]:
@@ -93,30 +97,31 @@ def test_one_misread_length_is_not_taken_for_a_reversed_coriolis_part():
 @pytest.mark.parametrize(("locale", "words"), [("en", "laid off reversed?"), ("ru", "отложено в обратную сторону?"),
                                                ("zh", "科氏加速度是否画反了？")])
 def test_the_error_table_tells_it_in_the_scene_s_language(tmp_path, locale, words):
-    path = tmp_path / "reversed.toml"
-    tables = _scene(_hand_plan(-1.0), locale)
-    path.write_text(_toml(tables), encoding="utf-8")
-    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "errors", "--sheet", "none"]) == 0
-    errors = (tmp_path / "out" / "errors.md").read_text(encoding="utf-8")
+    errors, results = _error_table(tmp_path, SCENE, locale, NUMBER, _as_read(_hand_plan(-1.0)))
     assert words in errors and "aA4A3ᵏ" in errors
-    results = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
     assert any(warning["code"] == "measured-far-off" for warning in results["warnings"])
 
 
-def _toml(tables: dict) -> str:
-    """The scene's tables back as TOML: the fixture's text with the locale and the readings changed."""
-    text = SCENE.read_text(encoding="utf-8").replace('locale  = "en"', f'locale  = "{tables["scene"]["locale"]}"')
-    readings = tables["measured"][str(NUMBER)]["acceleration"]
+def _error_table(tmp_path: Path, scene: Path, locale: str, number: int, readings: dict[str, float]) -> tuple[str, dict]:
+    """``errors.md`` and ``results.json`` of a run of ``scene`` in ``locale`` with ``readings`` of position
+    ``number``'s acceleration plan."""
+    text = scene.read_text(encoding="utf-8").replace('locale  = "en"', f'locale  = "{locale}"')
+    assert f'locale  = "{locale}"' in text
     given = ", ".join(f"{name} = {value}" for name, value in readings.items())
-    return f"{text}\n[measured.{NUMBER}]\nacceleration = {{ {given} }}\n"
+    path = tmp_path / "scene.toml"
+    path.write_text(f"{text}\n[measured.{number}]\nacceleration = {{ {given} }}\n", encoding="utf-8")
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "errors", "--sheet", "none"]) == 0
+    return ((tmp_path / "out" / "errors.md").read_text(encoding="utf-8"),
+            json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8")))
 
 
 TANGENT = Path("fixtures/tangent_mechanism_prp.toml")
 
 
-def _reversed_readings(reversed_parts: set[str]) -> tuple[dict, str]:
+def _reversed_readings(reversed_parts: set[str]) -> tuple[int, dict, str]:
     """The tangent mechanism's position with plans, its Coriolis parts named in ``reversed_parts`` laid off
-    reversed: its readings (mm, to 0.1) taken off that plan, given as a student gives them, and the warning told."""
+    reversed: its number, its readings (mm, to 0.1) taken off that plan, given as a student gives them, and the
+    warning told."""
     tables = tomllib.loads(TANGENT.read_text(encoding="utf-8"))
     analysis = analyse(graphplan.load(tables))
     position = analysis.plans[0]
@@ -128,13 +133,13 @@ def _reversed_readings(reversed_parts: set[str]) -> tuple[dict, str]:
                 for reading in position.readings if reading.plan == "acceleration"}
     tables["measured"] = {str(position.number): {"acceleration": readings}}
     [told] = _far_off_warnings(tables)
-    return readings, told
+    return position.number, readings, told
 
 
 @pytest.mark.parametrize("reversed_parts", [{"aA4A3ᵏ", "aBB4ᵏ"}, {"aA4A3ᵏ"}])
 def test_of_two_coriolis_parts_the_ones_laid_off_reversed_are_named(reversed_parts):
     """The tangent mechanism lays off two Coriolis parts; a hand may turn one wrong and the other right."""
-    _, told = _reversed_readings(reversed_parts)
+    *_, told = _reversed_readings(reversed_parts)
     many = len(reversed_parts) > 1
     named = told.split(f"fits the plan with the Coriolis component{'s' if many else ''} ")[1].split(" laid off")[0]
     assert set(named.split(" and ")) == reversed_parts
@@ -154,16 +159,15 @@ def test_a_misread_length_beside_readings_the_coriolis_part_leaves_alone_is_told
 def test_one_reading_alone_that_tells_a_part_reversed_is_no_proof_of_it():
     """aBB4ᵏ reversed alone moves pb alone of the tangent mechanism's segments: one length off, which chance may
     make (it is, to the drafting precision, the plan's pn4 too), is not told a part reversed."""
-    _, told = _reversed_readings({"aBB4ᵏ"})
+    *_, told = _reversed_readings({"aBB4ᵏ"})
     assert "laid off the other way" not in told and "pb = 24.7 mm" in told
 
 
 def test_readings_that_tell_only_one_of_two_parts_name_that_one():
     """pa4, pd and n4a4 of the tangent mechanism hang on aA4A3ᵏ alone: aBB4ᵏ reversed too changes none of them, so
     only aA4A3ᵏ is named (both had been)."""
-    readings, _ = _reversed_readings({"aA4A3ᵏ", "aBB4ᵏ"})
+    number, readings, _ = _reversed_readings({"aA4A3ᵏ", "aBB4ᵏ"})
     tables = tomllib.loads(TANGENT.read_text(encoding="utf-8"))
-    number = analyse(graphplan.load(tables)).plans[0].number
     tables["measured"] = {str(number): {"acceleration": {name: readings[name] for name in ("pa4", "pd", "n4a4")}}}
     [told] = _far_off_warnings(tables)
     assert "with the Coriolis component aA4A3ᵏ laid off the other way" in told
@@ -174,16 +178,9 @@ def test_readings_that_tell_only_one_of_two_parts_name_that_one():
     ("ru", "кориолисовы ускорения aA4A3ᵏ, aBB4ᵏ отложены в обратную сторону"),
     ("zh", "（pa、ps2、pa4、")])
 def test_two_parts_reversed_are_told_in_the_plural_in_the_error_table(tmp_path, locale, words):
-    readings, _ = _reversed_readings({"aA4A3ᵏ", "aBB4ᵏ"})
-    tables = tomllib.loads(TANGENT.read_text(encoding="utf-8"))
-    number = analyse(graphplan.load(tables)).plans[0].number
-    text = TANGENT.read_text(encoding="utf-8").replace('locale  = "en"', f'locale  = "{locale}"')
-    assert f'locale  = "{locale}"' in text
-    given = ", ".join(f"{name} = {value}" for name, value in readings.items())
-    path = tmp_path / "tangent.toml"
-    path.write_text(f"{text}\n[measured.{number}]\nacceleration = {{ {given} }}\n", encoding="utf-8")
-    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--only", "errors", "--sheet", "none"]) == 0
-    assert words in (tmp_path / "out" / "errors.md").read_text(encoding="utf-8")
+    number, readings, _ = _reversed_readings({"aA4A3ᵏ", "aBB4ᵏ"})
+    errors, _ = _error_table(tmp_path, TANGENT, locale, number, readings)
+    assert words in errors
 
 
 @pytest.mark.parametrize(("given", "error", "message"), [
