@@ -156,5 +156,5 @@ class NamedValues(dict):
         return (type(self), (dict(self), self.told))
 
 
-__all__ = ["NamedValues", "construction_letter_clash", "contrast", "described", "difference", "lookalike_hint", "plain", "plan_letter",
-           "twin"]
+__all__ = ["NamedValues", "construction_letter_clash", "contrast", "described", "difference", "lookalike_hint", "plain",
+           "plan_letter", "twin"]
