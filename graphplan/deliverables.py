@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import io
+import json
 import math
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
@@ -722,6 +723,31 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     return found
 
 
+def results_document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, Any]:
+    """``results.json`` as :func:`files` writes it for ``pieces``, its drawings laid out only where the file depends
+    on them: where readings far off the record may have been measured on polygons drawn larger than it."""
+    from .report.results import dumps
+
+    if analysis is not None and any(warning.code == "measured-far-off" for warning in analysis.warnings):
+        analysis = _as_drawn(analysis, drawings(scene, analysis, pieces))
+    # Through the file's own text: its numbers as a reader of the file gets them (a tuple a list, a key a string).
+    return json.loads(dumps(document(scene, analysis, pieces)))
+
+
+def _as_drawn(analysis: Analysis | None, made: list[Drawing]) -> Analysis | None:
+    """``analysis`` with the readings measured on the polygons ``made`` draws larger than the record, or on the
+    arrows of its groups cut free, told for what they are: known only once those are drawn."""
+    larger: dict[int, tuple[SheetPolygons, ...]] = {}
+    for drawing in made:
+        for number, polygons in drawing.larger_polygons:
+            larger[number] = (*larger.get(number, ()), polygons)
+    if analysis is None or not larger:
+        return analysis
+    from .analysis import read_off_sheets
+
+    return read_off_sheets(analysis, larger)
+
+
 def balancing_document(scene: Scene) -> dict[str, Any]:
     """``results.json``'s ``balancing``: each correction plane's mass-radius product and angle (its mass where the
     scene gives the radius), the unbalance before and after, rounded as the results file rounds every number."""
@@ -866,16 +892,9 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     found: dict[str, str | bytes] = {"results.json": ""}  # written first, once the sheets have said what they drew
     lever_scales: dict[str, float] = {}
     made = drawings(scene, analysis, pieces, dynamics, say=say)
-    # Readings measured on a course sheet's polygons drawn larger than the record, or on the arrows of the groups cut
-    # free, are known for what they are only once those are drawn: the results, the tables and the note tell them so.
-    larger: dict[int, tuple[SheetPolygons, ...]] = {}
-    for drawing in made:
-        for number, polygons in drawing.larger_polygons:
-            larger[number] = (*larger.get(number, ()), polygons)
-    if analysis is not None and larger:
-        from .analysis import read_off_sheets
-
-        analysis = read_off_sheets(analysis, larger)
+    told = _as_drawn(analysis, made)
+    if told is not analysis:
+        analysis = told
         if checked is not None:
             checked(analysis)
     say("writing the results")
@@ -956,4 +975,4 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
 
 
 __all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "balancing_document", "check_formats", "chosen",
-           "document", "drawings", "files", "missing", "tells_diagrams", "vibration_document", "vibration_figures"]
+           "document", "drawings", "files", "missing", "results_document", "tells_diagrams", "vibration_document", "vibration_figures"]

@@ -8,10 +8,11 @@ that they write the same files, warn of the same outcomes and refuse the same th
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .errors import GraphplanError, SceneError
 from .reader import check_choice, check_choices
@@ -86,10 +87,37 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
     OutputError
         for a folder the run cannot write, or one holding a file of the user's named as one of the run's.
     """
-    try:
-        # A sheet the caller gives stands in the scene's place: a warning of it names the caller's option.
-        sheet_key = options.sheet if sheet is not None else "drawing.sheet"
+    # A sheet the caller gives stands in the scene's place: a warning of it names the caller's option.
+    sheet_key = options.sheet if sheet is not None else "drawing.sheet"
+    with _sheet_named_as_given(sheet, options):
         return _run(as_asked(scene, locale, sheet, options), folder, only, formats, figures, options, sheet_key, say)
+
+
+def results(scene: Scene, only: Iterable[str] | None = None, locale: str | None = None, sheet: str | None = None,
+            options: Options = PYTHON, analysed: Callable[[Analysis], object] | None = None) -> dict[str, Any]:
+    """``results.json`` as :func:`run` with the same ``only``, ``locale`` and ``sheet`` writes it, nothing written:
+    the same pieces chosen and the same refusals of them; ``analysed`` is given the mechanism's analysis once made.
+    The drawings are laid out only where the file depends on them (readings far off the record that may have been
+    measured on a course sheet's polygons drawn larger), so a sheet a drawing overflows is not judged here as a run
+    judges it."""
+    from .analysis import analyse
+    from .deliverables import chosen, results_document
+
+    sheet_key = options.sheet if sheet is not None else "drawing.sheet"
+    with _sheet_named_as_given(sheet, options):
+        scene = as_asked(scene, locale, sheet, options)
+        only = _checked_pieces(only, options)
+        analysis = analyse(scene) if scene.has_linkage else None
+        if analysis is not None and analysed is not None:
+            analysed(analysis)
+        return results_document(scene, analysis, chosen(scene, analysis, only, options.only, sheet_key))
+
+
+@contextmanager
+def _sheet_named_as_given(sheet: str | None, options: Options) -> Iterator[None]:
+    """A refusal of the scene's sheet renamed for the ``sheet`` the caller gave in its place."""
+    try:
+        yield
     except SceneError as error:
         if sheet is not None and error.where == "drawing.sheet":
             # The way out the drawings offer, the scene's key sheet = "none", spelt as the option that was given in
@@ -103,29 +131,38 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
         raise
 
 
+def _checked_pieces(only: Iterable[str] | None, options: Options) -> list[str] | None:
+    """``only`` as a list of pieces, each checked: a piece mistyped is told at once, not once the mechanism is
+    analysed (what the scene has data for is known only then)."""
+    from .deliverables import PIECES
+
+    if only is None:
+        return None
+    only = list(only)  # a generator is read once
+    # The command line refuses an empty list as it parses it; scene.write(only=[]) wrote results.json alone.
+    if not only:
+        raise SceneError(options.only, "names nothing: give one or more pieces")
+    if "results" in only:
+        # Asked for by users who want the numbers alone: it is no piece, and was refused as a misspelt one.
+        raise SceneError(f"{options.only}[{only.index('results')}]", "results.json is written by every run, "
+                         "beside the pieces named: name those, or positions alone for the least beside it",
+                         "results")
+    return check_choices(only, options.only, PIECES, "piece")
+
+
 def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterable[str], figures: bool,
          options: Options, sheet_key: str, say: Callable[[str], None] | None) -> Run:
     from .analysis import analyse
-    from .deliverables import PIECES, check_formats
+    from .deliverables import check_formats
     from .output import check_folder
 
     tell = say if say is not None else (lambda stage: None)
-    # The command line refuses an empty list as it parses it; scene.write(only=[]) wrote results.json alone, and
-    # formats=[] the SVG, without a word, where the same run from the command line was refused.
-    only, formats = (list(only) if only is not None else None), list(formats)  # a generator is read once
-    for given, option, what in ((only, options.only, "pieces"), (formats, options.formats, "formats")):
-        if given is not None and not given:
-            raise SceneError(option, f"names nothing: give one or more {what}")
+    only = _checked_pieces(only, options)
+    formats = list(formats)  # a generator is read once
+    # The command line refuses an empty list as it parses it; formats=[] wrote the SVG alone without a word.
+    if not formats:
+        raise SceneError(options.formats, "names nothing: give one or more formats")
     formats = check_formats(formats, options.formats)
-    if only is not None:
-        # A piece mistyped is told at once, as a format is, not once the mechanism is analysed; what the scene has
-        # data for is known only then.
-        if "results" in only:
-            # Asked for by users who want the numbers alone: it is no piece, and was refused as a misspelt one.
-            raise SceneError(f"{options.only}[{only.index('results')}]", "results.json is written by every run, "
-                             "beside the pieces named: name those, or positions alone for the least beside it",
-                             "results")
-        only = check_choices(only, options.only, PIECES, "piece")
     # A folder the run could never write is told at once, not once the analysis and the drawings are done.
     check_folder(folder, options.out)
     tell("analysing the mechanism" if scene.has_linkage else "analysing the machine")

@@ -322,6 +322,17 @@ class Scene:
             raise missing_part(self, "vibration")
         return VibrationResponse(self)
 
+    def results(self, *, only: Sequence[str] | None = None, locale: str | None = None,
+                sheet: str | None = None) -> dict[str, Any]:
+        """``results.json`` as :meth:`write` with the same ``only``, ``locale`` and ``sheet`` writes it, as a dict,
+        no file written: the numbers of a scene with a mechanism or without one.  What the scene seems to have
+        mistyped is warned of with a ``UserWarning``, as :meth:`analyse` warns."""
+        from .notebook import warn_of_slips
+        from .run import PYTHON, results
+
+        _refuse_letter_lists(only=only)
+        return results(self, only, locale, sheet, options=PYTHON, analysed=warn_of_slips)
+
     def write(self, folder: str | Path, *, only: Sequence[str] | None = None, formats: Sequence[str] = ("svg",),
               figures: bool = False, locale: str | None = None, sheet: str | None = None) -> Run:
         """Write the scene's run to ``folder`` as ``graphplan run SCENE --out FOLDER`` writes it, the same files
@@ -335,17 +346,23 @@ class Scene:
 
         if not isinstance(folder, str | os.PathLike):  # pathlib's error named neither write nor its folder
             raise TypeError(f"write takes the folder to write, a path such as 'ratchet' (got {folder!r})")
-        for name, value, example in (("only", only, "note"), ("formats", formats, "png")):
-            if isinstance(value, str | bytes):  # taken letter by letter, "svg" would be refused as 's', 'v', 'g'
-                shown = value if isinstance(value, str) else value.decode("utf-8", "replace")
-                raise TypeError(f"{name} is a list of names: {name}=[{shown!r}], not {name}={value!r}")
-            if not isinstance(value, Iterable) and not (name == "only" and value is None):
-                raise TypeError(f"{name} is a list of names: {name}=[{example!r}] (got {value!r})")
+        _refuse_letter_lists(only=only, formats=formats)
         # A string is true: figures="no" drew the figures.
         if not isinstance(figures, bool | np.bool_):
             raise TypeError(f"figures is True or False (got {figures!r})")
         # A notebook has no shell to expand ~: the run went to a folder named ~ in the working folder.
         return run(self, Path(folder).expanduser(), only, formats, bool(figures), locale, sheet, options=PYTHON)
+
+
+def _refuse_letter_lists(**lists: Any) -> None:
+    """A TypeError for each of ``lists`` (``only``, ``formats``) given as one name, not a list of names."""
+    for name, value in lists.items():
+        if isinstance(value, str | bytes):  # taken letter by letter, "svg" would be refused as 's', 'v', 'g'
+            shown = value if isinstance(value, str) else value.decode("utf-8", "replace")
+            raise TypeError(f"{name} is a list of names: {name}=[{shown!r}], not {name}={value!r}")
+        if not isinstance(value, Iterable) and not (name == "only" and value is None):
+            example = {"only": "note", "formats": "png"}[name]
+            raise TypeError(f"{name} is a list of names: {name}=[{example!r}] (got {value!r})")
 
 
 # What each verb of a scene needs, and the verb that works it out, for the error that says what else to call.

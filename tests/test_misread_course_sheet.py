@@ -94,6 +94,9 @@ def test_readings_of_the_course_sheets_larger_polygons_are_told_which_sheet_they
     results = json.loads((folder / "results.json").read_text(encoding="utf-8"))
     assert [w["detail"] for w in results["warnings"] if w["code"] == "measured-far-off"] == [
         warning.split(": ", 1)[1]]
+    # scene.results() lays the sheets out to tell it so: the analysis alone advises a force_scale.
+    measured = _scene({POSITION: {"forces": _millimetres(drawn)}})
+    assert measured.results(only=["sheets", "errors", "note"]) == results
     errors = (folder / "errors.md").read_text(encoding="utf-8")
     assert f"on the course sheet (sheet_{sheet}.svg, sheet {sheet}, at μF = {sheet_scales} N/mm" in errors
     note = (folder / "note.md").read_text(encoding="utf-8")
