@@ -734,6 +734,18 @@ def results_document(scene: Scene, analysis: Analysis | None, pieces: tuple[str,
     return json.loads(dumps(document(scene, analysis, pieces)))
 
 
+def svg_files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, tuple[str, bool]]:
+    """Every SVG file :func:`files` writes for ``pieces``, by name, and whether it is a plot (matplotlib's, printed
+    at the plots' resolution) or a drawing: nothing rendered, no table or note made."""
+    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces else None
+    found = {name: (str(svg), False) for drawing in drawings(scene, analysis, pieces, dynamics)
+             for name, svg in _encodings(drawing, ("svg",)).items()}
+    plots = figures(scene, analysis, pieces, dynamics)
+    if "accuracy" in pieces and analysis is not None:
+        plots.update(accuracy_report(analysis))
+    return found | {name: (str(svg), True) for name, svg in plots.items() if name.endswith(".svg")}
+
+
 def _as_drawn(analysis: Analysis | None, made: list[Drawing]) -> Analysis | None:
     """``analysis`` with the readings measured on the polygons ``made`` draws larger than the record, or on the
     arrows of its groups cut free, told for what they are: known only once those are drawn."""
@@ -975,4 +987,4 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
 
 
 __all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "balancing_document", "check_formats", "chosen",
-           "document", "drawings", "files", "missing", "results_document", "tells_diagrams", "vibration_document", "vibration_figures"]
+           "document", "drawings", "files", "missing", "results_document", "svg_files", "tells_diagrams", "vibration_document", "vibration_figures"]

@@ -7,6 +7,7 @@
     five = scene.plan(5)              # the plans of position 5; in Jupyter it shows its plan sheet
     five.values["VB"], five.velocity.scale, five.forces_drawing
     numbers = scene.results()         # results.json as a dict, nothing written
+    scene.drawings()["diagrams.svg"]  # any SVG file of the run, by its name, nothing written
     rotor = graphplan.load("rotor.toml").balance()   # the correction planes; in Jupyter it shows its polygons
     rotor.planes[0].mass_radius, rotor.results["planes"], rotor.drawing.save("polygons.png")
     shaking = graphplan.load("rotor.toml").vibration_response()

@@ -100,17 +100,37 @@ def results(scene: Scene, only: Iterable[str] | None = None, locale: str | None 
     The drawings are laid out only where the file depends on them (readings far off the record that may have been
     measured on a course sheet's polygons drawn larger), so a sheet a drawing overflows is not judged here as a run
     judges it."""
+    from .deliverables import results_document
+
+    with _sheet_named_as_given(sheet, options):
+        return results_document(*_asked(scene, only, False, locale, sheet, options, analysed))
+
+
+def svg_files(scene: Scene, only: Iterable[str] | None = None, figures: bool = False, locale: str | None = None,
+              sheet: str | None = None, options: Options = PYTHON,
+              analysed: Callable[[Analysis], object] | None = None) -> dict[str, tuple[str, bool]]:
+    """Every SVG file :func:`run` with the same ``only``, ``figures``, ``locale`` and ``sheet`` writes, by name, and
+    whether it is a plot (:func:`graphplan.deliverables.svg_files`), nothing written; the pieces chosen and refused as
+    the run chooses and refuses them, ``analysed`` given the mechanism's analysis once made."""
+    from .deliverables import svg_files as made
+
+    with _sheet_named_as_given(sheet, options):
+        return made(*_asked(scene, only, figures, locale, sheet, options, analysed))
+
+
+def _asked(scene: Scene, only: Iterable[str] | None, figures: bool, locale: str | None, sheet: str | None,
+           options: Options, analysed: Callable[[Analysis], object] | None
+           ) -> tuple[Scene, Analysis | None, tuple[str, ...]]:
+    """The scene as asked for, its analysis (None without a linkage, given to ``analysed``) and the pieces chosen."""
     from .analysis import analyse
-    from .deliverables import chosen, results_document
 
     sheet_key = options.sheet if sheet is not None else "drawing.sheet"
-    with _sheet_named_as_given(sheet, options):
-        scene = as_asked(scene, locale, sheet, options)
-        only = _checked_pieces(only, options)
-        analysis = analyse(scene) if scene.has_linkage else None
-        if analysis is not None and analysed is not None:
-            analysed(analysis)
-        return results_document(scene, analysis, chosen(scene, analysis, only, options.only, sheet_key))
+    scene = as_asked(scene, locale, sheet, options)
+    only = _checked_pieces(only, options)
+    analysis = analyse(scene) if scene.has_linkage else None
+    if analysis is not None and analysed is not None:
+        analysed(analysis)
+    return scene, analysis, _pieces(scene, analysis, only, figures, options, sheet_key)
 
 
 @contextmanager
@@ -185,15 +205,10 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
              formats: tuple[str, ...], figures: bool, options: Options, sheet_key: str,
              tell: Callable[[str], None]) -> Run:
     """The run's pieces drawn and written, once the scene is analysed."""
-    from .deliverables import chosen, files, missing
+    from .deliverables import files, missing
     from .output import write_folder
 
-    asked = list(only) if only is not None else None
-    if figures:
-        if (reason := missing(scene, analysis, "figures")) is not None:
-            raise SceneError(options.figures, f"'figures' {reason}")
-        asked = [*(asked if asked is not None else chosen(scene, analysis)), "figures"]
-    pieces = chosen(scene, analysis, asked, options.only, sheet_key)
+    pieces = _pieces(scene, analysis, only, figures, options, sheet_key)
     outcomes: list[str] = []
     # The analysis as the files tell it: the course sheets drawn may say more of the hand readings.
     checked: list[Analysis] = []
@@ -212,6 +227,19 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
     tell("writing the folder")
     written = write_folder(folder, found, options.out)
     return Run(scene, analysis, Path(folder), tuple(written), tuple(position_warnings(analysis) + outcomes))
+
+
+def _pieces(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None, figures: bool, options: Options,
+            sheet_key: str) -> tuple[str, ...]:
+    """The pieces a run delivers: ``only`` (else those the scene asks for or has data for) and the figures if asked."""
+    from .deliverables import chosen, missing
+
+    asked = list(only) if only is not None else None
+    if figures:
+        if (reason := missing(scene, analysis, "figures")) is not None:
+            raise SceneError(options.figures, f"'figures' {reason}")
+        asked = [*(asked if asked is not None else chosen(scene, analysis)), "figures"]
+    return chosen(scene, analysis, asked, options.only, sheet_key)
 
 
 def position_warnings(analysis: Analysis | None) -> list[str]:

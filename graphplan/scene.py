@@ -52,6 +52,7 @@ if TYPE_CHECKING:
     from .analysis import Analysis
     from .machine_dynamics import MachineDynamics
     from .motion import Motion
+    from .notebook import Drawing as NotebookDrawing
     from .notebook import PositionPlans, RotorBalancing, VibrationResponse
     from .rotor_balancing import BalancingSpec
     from .run import Run
@@ -333,6 +334,20 @@ class Scene:
         _refuse_letter_lists(only=only)
         return results(self, only, locale, sheet, options=PYTHON, analysed=warn_of_slips)
 
+    def drawings(self, *, only: Sequence[str] | None = None, figures: bool = False, locale: str | None = None,
+                 sheet: str | None = None) -> dict[str, NotebookDrawing]:
+        """Every SVG file :meth:`write` with the same ``only``, ``figures``, ``locale`` and ``sheet`` writes, by its
+        name (``diagrams.svg``, ``sheet_1.svg``, ``motion.svg``), each a drawing Jupyter shows and that saves as
+        SVG, PNG or PDF, no file written; the scene's slips warned of as :meth:`analyse` warns of them."""
+        from .notebook import Drawing, warn_of_slips
+        from .report.plot_style import PLOT_DPI
+        from .run import PYTHON, svg_files
+
+        _refuse_letter_lists(only=only)
+        _refuse_other_than_bool(figures)
+        made = svg_files(self, only, bool(figures), locale, sheet, options=PYTHON, analysed=warn_of_slips)
+        return {name: Drawing(svg, png_dpi=PLOT_DPI if plot else None) for name, (svg, plot) in made.items()}
+
     def write(self, folder: str | Path, *, only: Sequence[str] | None = None, formats: Sequence[str] = ("svg",),
               figures: bool = False, locale: str | None = None, sheet: str | None = None) -> Run:
         """Write the scene's run to ``folder`` as ``graphplan run SCENE --out FOLDER`` writes it, the same files
@@ -340,16 +355,12 @@ class Scene:
         and ``sheet`` are the command line's ``--only``, ``--format``, ``--figures``, ``--locale`` and ``--sheet``.
         The folder is written whole or not at all.  Returns the paths written (``.files``) and the lines the
         command line warns with (``.warnings``)."""
-        import numpy as np
-
         from .run import PYTHON, run
 
         if not isinstance(folder, str | os.PathLike):  # pathlib's error named neither write nor its folder
             raise TypeError(f"write takes the folder to write, a path such as 'ratchet' (got {folder!r})")
         _refuse_letter_lists(only=only, formats=formats)
-        # A string is true: figures="no" drew the figures.
-        if not isinstance(figures, bool | np.bool_):
-            raise TypeError(f"figures is True or False (got {figures!r})")
+        _refuse_other_than_bool(figures)
         # A notebook has no shell to expand ~: the run went to a folder named ~ in the working folder.
         return run(self, Path(folder).expanduser(), only, formats, bool(figures), locale, sheet, options=PYTHON)
 
@@ -363,6 +374,14 @@ def _refuse_letter_lists(**lists: Any) -> None:
         if not isinstance(value, Iterable) and not (name == "only" and value is None):
             example = {"only": "note", "formats": "png"}[name]
             raise TypeError(f"{name} is a list of names: {name}=[{example!r}] (got {value!r})")
+
+
+def _refuse_other_than_bool(figures: Any) -> None:
+    import numpy as np
+
+    # A string is true: figures="no" drew the figures.
+    if not isinstance(figures, bool | np.bool_):
+        raise TypeError(f"figures is True or False (got {figures!r})")
 
 
 # What each verb of a scene needs, and the verb that works it out, for the error that says what else to call.

@@ -1,8 +1,9 @@
-"""scene.results(): results.json as a dict, nothing written.
+"""scene.results() and scene.drawings(): a run's results.json and its SVG files, nothing written.
 
-A notebook that wanted the run's numbers (a linkage's positions, its forces, a flywheel's JF) had to write a folder
-and read the file back.  Each dict here is checked against the results.json that scene.write writes for the same
-options, read back with json: the file is the contract, and the dict must be it, key for key and number for number.
+A notebook that wanted the run's numbers (a linkage's positions, its forces, a flywheel's JF) or a drawing other than
+a position's plans (the kinematic diagrams, a sheet, the motion's plot) had to write a folder and read the files back.
+Each is checked against what scene.write writes for the same options: the results.json read back with json (the file
+is the contract, and the dict must be it, key for key and number for number), and each SVG byte for byte.
 """
 
 import json
@@ -14,6 +15,7 @@ from pathlib import Path
 import pytest
 
 import graphplan
+from graphplan.report.plot_style import PLOT_DPI
 
 ROOT = Path(__file__).resolve().parents[1]
 RATCHET = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
@@ -66,3 +68,35 @@ def test_a_scene_mistyped_in_its_units_is_warned_of_at_the_callers_line():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         graphplan.load(RATCHET).results(only=["positions"])
+
+
+@pytest.mark.parametrize(("scene", "options", "plots"), [
+    (lambda: graphplan.load(RATCHET), {"figures": True, "locale": "zh"}, {"balancing.svg"}),
+    (lambda: graphplan.load_text(graphplan.starter("rotor")), {},
+     {"vibration_magnification.svg", "vibration_transmissibility.svg"})],
+    ids=["ratchet-figures-zh", "rotor-alone"])
+def test_each_drawing_is_the_svg_file_the_run_writes(scene, options, plots, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    found = scene().drawings(**options)
+    assert os.listdir(tmp_path) == []
+    scene().write(tmp_path / "out", **options)
+    written = {path.name: path.read_text(encoding="utf-8") for path in (tmp_path / "out").glob("*.svg")}
+    assert {name: drawing.svg for name, drawing in found.items()} == written
+    # The plots print at a report's resolution, the drawings at the export's, as the run's PNG are made.
+    assert {name for name, drawing in found.items() if drawing.png_dpi == PLOT_DPI} == plots
+
+
+def test_the_kinematic_diagrams_are_a_drawing_of_their_own():
+    found = graphplan.load(RATCHET).drawings(only=["diagrams"], locale="en")
+    assert list(found) == ["diagrams.svg"]
+    assert "Kinematic diagrams of the output link" in found["diagrams.svg"]._repr_svg_()
+
+
+@pytest.mark.parametrize(("options", "error", "told"), [
+    ({"only": "diagrams"}, TypeError, r"only is a list of names: only=\['diagrams'\]"),
+    ({"figures": "no"}, TypeError, r"figures is True or False \(got 'no'\)"),
+    ({"only": ["diagram"]}, graphplan.SceneError, r"^only\[0\]: .*did you mean 'diagrams'"),
+    ({"sheet": "B2"}, graphplan.SceneError, r"^sheet")])
+def test_drawings_asked_for_wrongly_are_refused_as_a_run_refuses_them(options, error, told):
+    with pytest.raises(error, match=told):
+        graphplan.load(RATCHET).drawings(**options)
