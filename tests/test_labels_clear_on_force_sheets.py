@@ -10,6 +10,7 @@ short leader, or where a single neighbour stands that can itself stand clear els
 keeps out of the pole's reach.
 """
 
+import dataclasses
 import math
 from pathlib import Path
 
@@ -23,7 +24,7 @@ from graphplan import deliverables
 from graphplan.analysis import analyse
 from graphplan.render import force_lever, force_marks
 from graphplan.render import forces as force_layout
-from graphplan.render.drawings import force_sheet
+from graphplan.render.drawings import force_sheet, length_scale
 from graphplan.render.labels import Anchor, cover_one_another, place_labels, text_box
 from graphplan.render.primitives import Text
 
@@ -34,6 +35,8 @@ LED_REACH_MM = 11.0
 # How far a name set beside its arm may stand from the arm (mm), and from the arm's middle along it.
 BESIDE_ARM_MM = 3.0
 ALONG_ARM_MM = 26.0
+# A class III triad whose force sheet of position 2 draws seventeen arms from Σ6.
+CROWDED_STAR = Path(__file__).parent / "scenes" / "triad_crowded_star_zh.toml"
 
 
 def laid_out(fixture: str, number: int) -> tuple[list, list[tuple[tuple[Anchor, ...], tuple[Text, ...]]]]:
@@ -170,11 +173,13 @@ def test_no_two_labels_of_a_drawing_cover_one_another(fixture):
 
 def test_two_names_in_a_crowded_star_of_arms_take_a_leader_or_a_line_rather_than_one_another():
     """The triad's force sheet of position 2 draws seventeen arms from Σ6, beside F; every spot round h8 and h13
-    covered another name's leader, which cost as much as covering a name, and the two stood one on the other."""
-    scene = graphplan.load(Path(__file__).parent / "scenes" / "triad_crowded_star_zh.toml")
-    analysis = analyse(scene)
+    covered another name's leader, which cost as much as covering a name, and the two stood one on the other.  The
+    sheet is drawn at the run's μl, where its names are crowded (the run draws the group larger,
+    tests/test_crowded_group_drawn_larger.py)."""
+    analysis = analyse(graphplan.load(CROWDED_STAR))
     [position] = [plan for plan in analysis.plans if plan.number == 2]
-    drawing = force_layout.layout(force_sheet(analysis, position))
+    drawing = force_layout.layout(dataclasses.replace(force_sheet(analysis, position),
+                                                      length_scale=length_scale(analysis)))
     bodies = [layer for layer in drawing if layer.name.startswith("body-III") and layer.name.endswith("labels")]
     assert bodies
     for layer in bodies:

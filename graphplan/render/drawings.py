@@ -53,6 +53,8 @@ _LARGER_SCALES_TRIED = 40
 # analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
 _chosen_scales: OwnedMemo[float] = OwnedMemo()
 _largest_scales: OwnedMemo[float] = OwnedMemo()
+# The μl of each plan position's force sheet whose groups cut free have no room at the run's (:func:`_groups_roomier`).
+_roomier_scales: OwnedMemo[float] = OwnedMemo()
 
 
 def paths_extent(analysis: Analysis) -> float:
@@ -535,7 +537,7 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         friction = analysis.friction
         ideal = float(rounded_zero(plan_position.forces.balancing, rubbing.balancing, analysis.balancing_scale))
         eta = float(efficiency(analysis.mechanism, ideal, rubbing.balancing))
-    return force_layout.ForceSheet(
+    sheet = force_layout.ForceSheet(
         mechanism=analysis.mechanism, motion=analysis.motion, index=plan_position.index,
         number=plan_position.number, positions={**plan_position.positions, **forces.auxiliary}, forces=forces,
         lever=lever, velocity=velocity, length_scale=length_scale(analysis),
@@ -544,3 +546,29 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         without_friction=ideal, efficiency=eta, locked_with_friction=locked,
         lever_scale=force_lever.enlarged_lever_scale(velocity, lever),
         velocity_scale=text["velocity_scale"].format(value=scale_factor(velocity.scale)))
+    # Chosen once for a position: the course sheets ask for its force sheet again, and the choice lays its groups out.
+    key = (with_friction, analysis.scene.locale, analysis.scene.drawing, sheet.length_scale)
+    roomier = _roomier_scales.get(plan_position, key, lambda: _groups_roomier(sheet).length_scale)
+    return sheet if roomier == sheet.length_scale else dataclasses.replace(sheet, length_scale=roomier)
+
+
+# How many standard steps larger than the run's μl a crowded group cut free may be drawn.
+_ROOMIER_STEPS = 2
+
+
+def _groups_roomier(sheet: force_layout.ForceSheet) -> force_layout.ForceSheet:
+    """``sheet`` with its groups cut free drawn a standard step larger (a finer μl), or two, where at the run's μl
+    the names of one find no room apart (a class III triad's seventeen arms from Σ6, its names left on its lines and
+    on long leaders): a draughtsman draws a crowded group larger.  Left at the run's μl where no step clears them."""
+    from . import force_bodies
+
+    def crowded(drawn: force_layout.ForceSheet) -> bool:
+        return any(force_bodies.body(drawn, group).labels_crowded for group in drawn.forces.groups)
+
+    if not crowded(sheet):
+        return sheet
+    for steps in range(1, _ROOMIER_STEPS + 1):
+        larger = dataclasses.replace(sheet, length_scale=finer_standard_scale(sheet.length_scale, steps))
+        if not crowded(larger):
+            return larger
+    return sheet
