@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from .errors import GraphplanError, SceneError
 from .reader import check_choice, check_choices
@@ -20,6 +20,8 @@ from .scene import LOCALES, Scene, check_sheet
 
 if TYPE_CHECKING:
     from .analysis import Analysis
+
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -103,7 +105,7 @@ def results(scene: Scene, only: Iterable[str] | None = None, locale: str | None 
     from .deliverables import results_document
 
     with _sheet_named_as_given(sheet, options):
-        return results_document(*_asked(scene, only, False, locale, sheet, options, analysed))
+        return _noting_warnings(results_document, *_asked(scene, only, False, locale, sheet, options, analysed))
 
 
 def svg_files(scene: Scene, only: Iterable[str] | None = None, figures: bool = False, locale: str | None = None,
@@ -115,7 +117,17 @@ def svg_files(scene: Scene, only: Iterable[str] | None = None, figures: bool = F
     from .deliverables import svg_files as made
 
     with _sheet_named_as_given(sheet, options):
-        return made(*_asked(scene, only, figures, locale, sheet, options, analysed))
+        return _noting_warnings(made, *_asked(scene, only, figures, locale, sheet, options, analysed))
+
+
+def _noting_warnings(make: Callable[[Scene, Analysis | None, tuple[str, ...]], T], scene: Scene,
+                     analysis: Analysis | None, pieces: tuple[str, ...]) -> T:
+    """``make(scene, analysis, pieces)``, a refusal of it noting the analysis's warnings as a run's does."""
+    try:
+        return make(scene, analysis, pieces)
+    except GraphplanError as error:
+        note_warnings(error, analysis)
+        raise
 
 
 def _asked(scene: Scene, only: Iterable[str] | None, figures: bool, locale: str | None, sheet: str | None,

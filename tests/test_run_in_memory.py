@@ -100,3 +100,14 @@ def test_the_kinematic_diagrams_are_a_drawing_of_their_own():
 def test_drawings_asked_for_wrongly_are_refused_as_a_run_refuses_them(options, error, told):
     with pytest.raises(error, match=told):
         graphplan.load(RATCHET).drawings(**options)
+
+
+def test_a_drawing_refused_notes_the_warnings_that_may_name_its_cause():
+    """A run's refusal carries the scene's warnings as notes (the command line prints them before it): a centre of
+    mass typed in millimetres draws the plan of positions larger than any paper, and the warning names the key."""
+    text = (ROOT / "fixtures" / "engine_slider_crank.toml").read_text(encoding="utf-8")
+    slipped = graphplan.load_text(text.replace("at = 0.055 }", "at = 5.5 }"))
+    with pytest.warns(UserWarning, match=r"^lengths-in-mm: points\.S3\.at = 5\.5 m"), \
+            pytest.raises(graphplan.SceneError, match=r"^points\.S3\.at: ") as refused:
+        slipped.drawings(only=["positions"])
+    assert [note for note in refused.value.__notes__ if note.startswith("warning: points.S3.at = 5.5 m")]
