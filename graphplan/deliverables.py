@@ -723,27 +723,46 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     return found
 
 
-def results_document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, Any]:
-    """``results.json`` as :func:`files` writes it for ``pieces``, its drawings laid out only where the file depends
-    on them: where readings far off the record may have been measured on polygons drawn larger than it."""
+def results_document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+                     warn: Callable[[str], None] | None = None) -> dict[str, Any]:
+    """``results.json`` as :func:`files` writes it for ``pieces``, ``warn`` told of the same outcomes: its drawings
+    laid out, not written, so that what a run refuses is refused here too and readings measured on polygons drawn
+    larger than the record are told so."""
     from .report.results import dumps
 
-    if analysis is not None and any(warning.code == "measured-far-off" for warning in analysis.warnings):
-        analysis = _as_drawn(analysis, drawings(scene, analysis, pieces))
+    analysis, _, dynamics = _laid_out(scene, analysis, pieces, warn)
     # Through the file's own text: its numbers as a reader of the file gets them (a tuple a list, a key a string).
-    return json.loads(dumps(document(scene, analysis, pieces)))
+    return json.loads(dumps(document(scene, analysis, pieces, dynamics)))
 
 
-def svg_files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, tuple[str, bool]]:
+def svg_files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+              warn: Callable[[str], None] | None = None) -> dict[str, tuple[str, bool]]:
     """Every SVG file :func:`files` writes for ``pieces``, by name, and whether it is a plot (matplotlib's, printed
-    at the plots' resolution) or a drawing: nothing rendered, no table or note made."""
-    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces else None
-    found = {name: (str(svg), False) for drawing in drawings(scene, analysis, pieces, dynamics)
-             for name, svg in _encodings(drawing, ("svg",)).items()}
+    at the plots' resolution) or a drawing, ``warn`` told of the same outcomes: nothing rendered, no table or note
+    made."""
+    analysis, made, dynamics = _laid_out(scene, analysis, pieces, warn)
+    found = {name: (str(svg), False) for drawing in made for name, svg in _encodings(drawing, ("svg",)).items()}
     plots = figures(scene, analysis, pieces, dynamics)
     if "accuracy" in pieces and analysis is not None:
         plots.update(accuracy_report(analysis))
     return found | {name: (str(svg), True) for name, svg in plots.items() if name.endswith(".svg")}
+
+
+def _laid_out(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...], warn: Callable[[str], None] | None,
+              say: Callable[[str], None] = _silent
+              ) -> tuple[Analysis | None, list[Drawing], MachineDynamics | None]:
+    """The drawings of ``pieces`` laid out, ``warn`` told first of each outcome a user should not miss (a machine
+    that stalls, a drawing too small to read); with the analysis as they tell it (:func:`_as_drawn`) and the
+    machine's dynamics, which the results, the plots and the note take."""
+    # The model, the flywheel and the integrated motion serve the results, the drawing, the plot and the note,
+    # which tells all the scene has whichever drawings are asked for.
+    explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
+    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
+    if warn is not None:
+        for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
+            warn(told)
+    made = drawings(scene, analysis, pieces, dynamics, say=say)
+    return _as_drawn(analysis, made), made, dynamics
 
 
 def _as_drawn(analysis: Analysis | None, made: list[Drawing]) -> Analysis | None:
@@ -894,17 +913,9 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     from .report.plot_style import PLOT_DPI
     from .report.results import dumps
 
-    # The model, the flywheel and the integrated motion serve the results, the drawing, the plot and the note,
-    # which tells all the scene has whichever drawings are asked for.
-    explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
-    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
-    if warn is not None:
-        for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
-            warn(told)
     found: dict[str, str | bytes] = {"results.json": ""}  # written first, once the sheets have said what they drew
     lever_scales: dict[str, float] = {}
-    made = drawings(scene, analysis, pieces, dynamics, say=say)
-    told = _as_drawn(analysis, made)
+    told, made, dynamics = _laid_out(scene, analysis, pieces, warn, say)
     if told is not analysis:
         analysis = told
         if checked is not None:

@@ -190,18 +190,25 @@ class PositionPlans:
         return self.drawing.svg
 
 
+def warn_of(line: str) -> None:
+    """``line``, one the command line prints after ``warning:`` (a machine that stalls, a stiffness typed in kN/m),
+    warned of with a ``UserWarning`` at the notebook's line."""
+    import warnings
+
+    from . import _caller_level
+
+    warnings.warn(line, UserWarning, stacklevel=_caller_level())
+
+
 def warn_of_slips(analysis: Analysis) -> Analysis:
     """``analysis``, its warnings of the scene as a whole (a speed in rpm, lengths in mm, masses in grams) warned of
     with a ``UserWarning`` first: the command line prints them, and a notebook's numbers, off a thousandfold, came
     with no word."""
-    import warnings
-
-    from . import _caller_level
     from .analysis import SCENE_WIDE_WARNINGS
 
     for warning in analysis.warnings:
         if warning.code in SCENE_WIDE_WARNINGS:
-            warnings.warn(f"{warning.code}: {warning.detail}", UserWarning, stacklevel=_caller_level())
+            warn_of(f"{warning.code}: {warning.detail}")
     return analysis
 
 

@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any
 
 from .errors import GraphplanError, SceneError
 from .reader import check_choice, check_choices
@@ -20,8 +20,6 @@ from .scene import LOCALES, Scene, check_sheet
 
 if TYPE_CHECKING:
     from .analysis import Analysis
-
-T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -96,35 +94,40 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
 
 
 def results(scene: Scene, only: Iterable[str] | None = None, locale: str | None = None, sheet: str | None = None,
-            options: Options = PYTHON, analysed: Callable[[Analysis], object] | None = None) -> dict[str, Any]:
+            options: Options = PYTHON, analysed: Callable[[Analysis], object] | None = None,
+            warn: Callable[[str], None] | None = None) -> dict[str, Any]:
     """``results.json`` as :func:`run` with the same ``only``, ``locale`` and ``sheet`` writes it, nothing written:
-    the same pieces chosen and the same refusals of them; ``analysed`` is given the mechanism's analysis once made.
-    The drawings are laid out only where the file depends on them (readings far off the record that may have been
-    measured on a course sheet's polygons drawn larger), so a sheet a drawing overflows is not judged here as a run
-    judges it."""
+    the same pieces chosen and the same refusals (the drawings are laid out for them); ``analysed`` is given the
+    mechanism's analysis once made, ``warn`` each outcome the run warns of (a machine that stalls)."""
     from .deliverables import results_document
 
     with _sheet_named_as_given(sheet, options):
-        return _noting_warnings(results_document, *_asked(scene, only, False, locale, sheet, options, analysed))
+        scene, analysis, pieces = _asked(scene, only, False, locale, sheet, options, analysed)
+        with _noting_warnings(analysis):
+            return results_document(scene, analysis, pieces, warn)
 
 
 def svg_files(scene: Scene, only: Iterable[str] | None = None, figures: bool = False, locale: str | None = None,
               sheet: str | None = None, options: Options = PYTHON,
-              analysed: Callable[[Analysis], object] | None = None) -> dict[str, tuple[str, bool]]:
+              analysed: Callable[[Analysis], object] | None = None,
+              warn: Callable[[str], None] | None = None) -> dict[str, tuple[str, bool]]:
     """Every SVG file :func:`run` with the same ``only``, ``figures``, ``locale`` and ``sheet`` writes, by name, and
     whether it is a plot (:func:`graphplan.deliverables.svg_files`), nothing written; the pieces chosen and refused as
-    the run chooses and refuses them, ``analysed`` given the mechanism's analysis once made."""
+    the run chooses and refuses them, ``analysed`` given the mechanism's analysis once made, ``warn`` each outcome
+    the run warns of."""
     from .deliverables import svg_files as made
 
     with _sheet_named_as_given(sheet, options):
-        return _noting_warnings(made, *_asked(scene, only, figures, locale, sheet, options, analysed))
+        scene, analysis, pieces = _asked(scene, only, figures, locale, sheet, options, analysed)
+        with _noting_warnings(analysis):
+            return made(scene, analysis, pieces, warn)
 
 
-def _noting_warnings(make: Callable[[Scene, Analysis | None, tuple[str, ...]], T], scene: Scene,
-                     analysis: Analysis | None, pieces: tuple[str, ...]) -> T:
-    """``make(scene, analysis, pieces)``, a refusal of it noting the analysis's warnings as a run's does."""
+@contextmanager
+def _noting_warnings(analysis: Analysis | None) -> Iterator[None]:
+    """A refusal noting the analysis's warnings (:func:`note_warnings`), as a run's does."""
     try:
-        return make(scene, analysis, pieces)
+        yield
     except GraphplanError as error:
         note_warnings(error, analysis)
         raise
@@ -199,11 +202,8 @@ def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterab
     check_folder(folder, options.out)
     tell("analysing the mechanism" if scene.has_linkage else "analysing the machine")
     analysis = analyse(scene) if scene.has_linkage else None
-    try:
+    with _noting_warnings(analysis):
         return _deliver(scene, analysis, folder, only, formats, figures, options, sheet_key, tell)
-    except GraphplanError as error:
-        note_warnings(error, analysis)
-        raise
 
 
 def note_warnings(error: GraphplanError, analysis: Analysis | None) -> None:

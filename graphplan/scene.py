@@ -326,26 +326,29 @@ class Scene:
     def results(self, *, only: Sequence[str] | None = None, locale: str | None = None,
                 sheet: str | None = None) -> dict[str, Any]:
         """``results.json`` as :meth:`write` with the same ``only``, ``locale`` and ``sheet`` writes it, as a dict,
-        no file written: the numbers of a scene with a mechanism or without one.  What the scene seems to have
-        mistyped is warned of with a ``UserWarning``, as :meth:`analyse` warns."""
-        from .notebook import warn_of_slips
+        no file written: the numbers of a scene with a mechanism or without one, or the refusal :meth:`write` gives
+        (the drawings are laid out for it, so a run's time).  What the scene seems to have mistyped, and each outcome
+        :meth:`write` warns of, is warned of with a ``UserWarning``."""
+        from .notebook import warn_of, warn_of_slips
         from .run import PYTHON, results
 
         _refuse_letter_lists(only=only)
-        return results(self, only, locale, sheet, options=PYTHON, analysed=warn_of_slips)
+        return results(self, only, locale, sheet, options=PYTHON, analysed=warn_of_slips, warn=warn_of)
 
     def drawings(self, *, only: Sequence[str] | None = None, figures: bool = False, locale: str | None = None,
                  sheet: str | None = None) -> dict[str, NotebookDrawing]:
         """Every SVG file :meth:`write` with the same ``only``, ``figures``, ``locale`` and ``sheet`` writes, by its
         name (``diagrams.svg``, ``sheet_1.svg``, ``motion.svg``), each a drawing Jupyter shows and that saves as
-        SVG, PNG or PDF, no file written; the scene's slips warned of as :meth:`analyse` warns of them."""
-        from .notebook import Drawing, warn_of_slips
+        SVG, PNG or PDF, no file written; what the scene seems to have mistyped, and each outcome :meth:`write`
+        warns of, warned of with a ``UserWarning``."""
+        from .notebook import Drawing, warn_of, warn_of_slips
         from .report.plot_style import PLOT_DPI
         from .run import PYTHON, svg_files
 
         _refuse_letter_lists(only=only)
         _refuse_other_than_bool(figures)
-        made = svg_files(self, only, bool(figures), locale, sheet, options=PYTHON, analysed=warn_of_slips)
+        made = svg_files(self, only, bool(figures), locale, sheet, options=PYTHON, analysed=warn_of_slips,
+                         warn=warn_of)
         return {name: Drawing(svg, png_dpi=PLOT_DPI if plot else None) for name, (svg, plot) in made.items()}
 
     def write(self, folder: str | Path, *, only: Sequence[str] | None = None, formats: Sequence[str] = ("svg",),

@@ -53,10 +53,15 @@ def test_the_pieces_asked_for_decide_the_parts_given():
     ({"only": ["velocty"]}, graphplan.SceneError, r"^only\[0\]: .*did you mean 'velocity'"),
     ({"only": ["balancing"]}, graphplan.SceneError, r"^only\[0\]: 'balancing' "),
     ({"locale": "de"}, graphplan.SceneError, r"^locale: "),
-    ({"sheet": "A9"}, graphplan.SceneError, r"^sheet")])
-def test_what_a_run_refuses_is_refused_alike_and_named_as_python_names_it(options, error, told):
+    ({"sheet": "A9"}, graphplan.SceneError, r"^sheet"),
+    # The ratchet's plan of positions, on no A4 sheet: refused though results.json draws nothing.
+    ({"sheet": "A4"}, graphplan.SceneError, r"^sheet \(in place of drawing\.sheet\): the plan of positions .* no A4")])
+def test_what_a_run_refuses_is_refused_alike_and_named_as_python_names_it(options, error, told, tmp_path):
     with pytest.raises(error, match=told):
         graphplan.load(RATCHET).results(**options)
+    if error is graphplan.SceneError:
+        with pytest.raises(error, match=told):
+            graphplan.load(RATCHET).write(tmp_path / "out", **options)
 
 
 def test_a_scene_mistyped_in_its_units_is_warned_of_at_the_callers_line():
@@ -102,12 +107,28 @@ def test_drawings_asked_for_wrongly_are_refused_as_a_run_refuses_them(options, e
         graphplan.load(RATCHET).drawings(**options)
 
 
-def test_a_drawing_refused_notes_the_warnings_that_may_name_its_cause():
+@pytest.mark.parametrize("verb", ["results", "drawings"])
+def test_a_refusal_notes_the_warnings_that_may_name_its_cause(verb):
     """A run's refusal carries the scene's warnings as notes (the command line prints them before it): a centre of
     mass typed in millimetres draws the plan of positions larger than any paper, and the warning names the key."""
     text = (ROOT / "fixtures" / "engine_slider_crank.toml").read_text(encoding="utf-8")
     slipped = graphplan.load_text(text.replace("at = 0.055 }", "at = 5.5 }"))
     with pytest.warns(UserWarning, match=r"^lengths-in-mm: points\.S3\.at = 5\.5 m"), \
             pytest.raises(graphplan.SceneError, match=r"^points\.S3\.at: ") as refused:
-        slipped.drawings(only=["positions"])
+        getattr(slipped, verb)(only=["positions"])
     assert [note for note in refused.value.__notes__ if note.startswith("warning: points.S3.at = 5.5 m")]
+
+
+@pytest.mark.parametrize("verb", ["results", "drawings"])
+def test_what_the_run_warns_of_is_warned_of_at_the_callers_line(verb, tmp_path):
+    """A rotor's machine of 100 t on the starter's springs would sag metres: scene.write gives the warning in its
+    .warnings, the command line prints it; results() and drawings() warn of it, a scene without a linkage too."""
+    tables = tomllib.loads(graphplan.starter("rotor"))
+    tables["vibration"]["mass"] = 100000.0
+    heavy = graphplan.load(tables)
+    written = heavy.write(tmp_path / "out").warnings
+    with pytest.warns(UserWarning) as told:
+        getattr(heavy, verb)()
+    assert [str(warning.message) for warning in told] == list(written)
+    assert [line for line in written if line.startswith("vibration.stiffness: ")]
+    assert {Path(warning.filename).name for warning in told} == {Path(__file__).name}
