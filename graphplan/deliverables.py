@@ -998,4 +998,5 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
 
 
 __all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "balancing_document", "check_formats", "chosen",
-           "document", "drawings", "files", "missing", "results_document", "svg_files", "tells_diagrams", "vibration_document", "vibration_figures"]
+           "document", "drawings", "files", "missing", "results_document", "svg_files", "tells_diagrams",
+           "vibration_document", "vibration_figures"]
