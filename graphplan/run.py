@@ -87,10 +87,9 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
     OutputError
         for a folder the run cannot write, or one holding a file of the user's named as one of the run's.
     """
-    # A sheet the caller gives stands in the scene's place: a warning of it names the caller's option.
-    sheet_key = options.sheet if sheet is not None else "drawing.sheet"
     with _sheet_named_as_given(sheet, options):
-        return _run(as_asked(scene, locale, sheet, options), folder, only, formats, figures, options, sheet_key, say)
+        return _run(as_asked(scene, locale, sheet, options), folder, only, formats, figures, options,
+                    _sheet_key(sheet, options), say)
 
 
 def results(scene: Scene, only: Iterable[str] | None = None, locale: str | None = None, sheet: str | None = None,
@@ -139,13 +138,18 @@ def _asked(scene: Scene, only: Iterable[str] | None, figures: bool, locale: str 
     """The scene as asked for, its analysis (None without a linkage, given to ``analysed``) and the pieces chosen."""
     from .analysis import analyse
 
-    sheet_key = options.sheet if sheet is not None else "drawing.sheet"
     scene = as_asked(scene, locale, sheet, options)
     only = _checked_pieces(only, options)
     analysis = analyse(scene) if scene.has_linkage else None
     if analysis is not None and analysed is not None:
         analysed(analysis)
-    return scene, analysis, _pieces(scene, analysis, only, figures, options, sheet_key)
+    return scene, analysis, _pieces(scene, analysis, only, figures, options, _sheet_key(sheet, options))
+
+
+def _sheet_key(sheet: str | None, options: Options) -> str:
+    """The key a warning of the sheet names: the caller's option where the caller gives a sheet, which then stands
+    in the scene's place."""
+    return options.sheet if sheet is not None else "drawing.sheet"
 
 
 @contextmanager

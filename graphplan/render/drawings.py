@@ -563,7 +563,8 @@ def _groups_roomier(sheet: force_layout.ForceSheet) -> force_layout.ForceSheet:
     from . import force_bodies
 
     def crowded(drawn: force_layout.ForceSheet) -> bool:
-        return any(force_bodies.body(drawn, group).labels_crowded for group in drawn.forces.groups)
+        return any(force_bodies.labels_cover_one_another(force_bodies.body(drawn, group))
+                   for group in drawn.forces.groups)
 
     if not crowded(sheet):
         return sheet

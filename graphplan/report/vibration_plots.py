@@ -24,7 +24,15 @@ import numpy as np
 from ..locale import strings as locale_strings
 from ..render.numerals import short
 from ..vibration import LARGE_MAGNIFICATION, VibrationSpec, transmissibility, unbalance_magnification
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, number_log_axes, settings, with_decimal_mark
+from .plot_style import (
+    PAGE_WIDTH_INCHES,
+    legend_under,
+    new_figure,
+    number_log_axes,
+    settings,
+    with_decimal_mark,
+    write_svg,
+)
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
@@ -193,11 +201,11 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         number_log_axes(figure)
         # Under the plot, not on it: inside, it hid a curve wherever the curves ran (ζ = 1 at r ≈ 3.3–4.3); beside it,
         # on a figure as wide as a report's page, it left the curves half the width.
-        legend_under(figure, plot, ncol=3)
+        legend_under(figure, plot, ncol=3, laid_out=True)
         with_decimal_mark(figure, text["decimal_mark"])
         if isinstance(target, Path):
             target.parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(target, format="svg", metadata={"Date": None})
+        write_svg(figure, target)
     return target
 
 
