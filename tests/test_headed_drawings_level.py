@@ -57,8 +57,10 @@ def side_by_side_not_level(sheets) -> list[tuple]:
     return found
 
 
-CASES = [*((f"new:{kind}", locale) for kind in STARTERS for locale in ("en", "ru")),
-         *((path.name, locale) for path in sorted(FIXTURES.glob("*.toml")) for locale in ("en", "ru"))]
+# Every scene once, in English and Russian by turns: the longer Russian headings are tried on half the scenes (both
+# languages on every scene laid out 38 sheets, a second of the suite's wall time in forty).
+SCENES = [*(f"new:{kind}" for kind in STARTERS), *(path.name for path in sorted(FIXTURES.glob("*.toml")))]
+CASES = [(name, ("en", "ru")[k % 2]) for k, name in enumerate(SCENES)]
 
 
 @pytest.mark.parametrize(("name", "locale"), CASES)
