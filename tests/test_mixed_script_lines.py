@@ -47,6 +47,23 @@ def test_the_width_is_the_fonts_own_as_freetype_measures_it(weight):
     assert width_em(script_runs(LINE), weight) == pytest.approx(measured, abs=0.5e-3 * len(LINE))
 
 
+def test_the_cjk_widths_are_read_and_the_font_file_closed():
+    """The font was left to the collector with its file open: a ResourceWarning wherever warnings show (a notebook
+    run with ``-W always``), found by a probe.  The widths, read out, are the font's still (the test above)."""
+    import gc
+    import warnings
+
+    from graphplan.render.script_runs import _advances
+
+    _advances.cache_clear()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ResourceWarning)
+        advance = _advances(CJK_FONT, "normal")
+        gc.collect()
+    assert advance("力") == pytest.approx(1.0) and 0.2 < advance("N") < 1.0
+    assert not [str(each.message) for each in caught if issubclass(each.category, ResourceWarning)]
+
+
 def _ink_columns_mm(layers) -> tuple[float, float]:
     """The leftmost and rightmost inked columns of the rendered page (mm from its left), the page's own frame aside."""
     import cairosvg

@@ -59,15 +59,18 @@ def _advances(family: str, weight: str):
     try:
         from fontTools.ttLib import TTFont
 
-        font = TTFont(path, fontNumber=index, lazy=True)
-        glyphs, metrics, units = font.getBestCmap(), font["hmtx"], font["head"].unitsPerEm
+        # The widths read out and the file closed: the font left to the collector left its file open, a
+        # ResourceWarning in a notebook or a test run that shows them.
+        with TTFont(path, fontNumber=index, lazy=True) as font:
+            glyphs, units = font.getBestCmap(), font["head"].unitsPerEm
+            widths = {glyph: width for glyph, (width, _) in font["hmtx"].metrics.items()}
+            notdef = widths[font.getGlyphOrder()[0]]
     except Exception:  # noqa: BLE001 - any unreadable font leaves the line in one font, as before
         return None
-    notdef = metrics[font.getGlyphOrder()[0]][0]
 
     def advance(character: str) -> float:
         glyph = glyphs.get(ord(character))
-        return (metrics[glyph][0] if glyph is not None else notdef) / units
+        return (widths[glyph] if glyph is not None else notdef) / units
 
     return advance
 
