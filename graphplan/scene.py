@@ -10,6 +10,7 @@ from __future__ import annotations
 import codecs
 import datetime
 import difflib
+import functools
 import itertools
 import json
 import math
@@ -17,7 +18,7 @@ import os
 import re
 import tomllib
 import unicodedata
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
@@ -216,6 +217,23 @@ class Project:
     date: datetime.date | str = ""
 
 
+def _on_a_scene(verb: Callable[..., Any]) -> Callable[..., Any]:
+    """``verb``, a scene's method, refusing with a TypeError what is not a scene: ``Scene.analyse("x.toml")`` told
+    that a string has no ``has_linkage``, as solve's plain function tells its caller what it takes."""
+
+    @functools.wraps(verb)
+    def checked(self: Any, *args: Any, **kwargs: Any) -> Any:
+        if isinstance(self, str | os.PathLike):
+            raise TypeError(f"Scene.{verb.__name__} is called on a scene, read first: "
+                            f"graphplan.load({os.fspath(self)!r}).{verb.__name__}(...)")
+        if not isinstance(self, Scene):
+            raise TypeError(f"Scene.{verb.__name__} is called on a scene, as graphplan.load(path) reads it "
+                            f"(got {self!r})")
+        return verb(self, *args, **kwargs)
+
+    return checked
+
+
 @dataclass(frozen=True)
 class Scene:
     """Everything one scene file says, checked for syntax and range."""
@@ -272,12 +290,14 @@ class Scene:
         return self.driver is not None
 
     # The notebook's verbs.  They import the stages they run when called: a scene is read first of all.
+    @_on_a_scene
     def solve(self, driver=None) -> Motion:
         """The analytic motion at the scene's positions, or at ``driver`` (crank angles, rad; slider, m)."""
         from . import solve
 
         return solve(self, driver)
 
+    @_on_a_scene
     def analyse(self) -> Analysis:
         """The whole analysis of the scene's mechanism (:func:`graphplan.analysis.analyse`); what the scene seems to
         have mistyped (a speed in rpm, lengths in mm) is warned of with a ``UserWarning``, as the command line warns."""
@@ -288,6 +308,7 @@ class Scene:
             raise missing_part(self, "mechanism")
         return warn_of_slips(analyse(self))
 
+    @_on_a_scene
     def machine_dynamics(self) -> MachineDynamics:
         """The scene's ``[dynamics]`` worked out as a run works it out: ``.model`` (Je, Me over the cycle),
         ``.flywheel`` (None without δ) and ``.motion`` (the equation of motion integrated; None without a motor)."""
@@ -297,6 +318,7 @@ class Scene:
             raise missing_part(self, "dynamics")
         return MachineDynamics(self.analyse() if self.has_linkage else self)
 
+    @_on_a_scene
     def plan(self, number: int) -> PositionPlans:
         """The plans of position ``number`` (:func:`graphplan.notebook.plan`); Jupyter shows its plan sheet."""
         from .notebook import plan
@@ -305,6 +327,7 @@ class Scene:
             raise missing_part(self, "mechanism")
         return plan(self, number)
 
+    @_on_a_scene
     def balance(self) -> RotorBalancing:
         """The scene's ``[balancing]`` rotor balanced as a run balances it: ``.planes`` (each correction's m·r and
         angle), ``.results`` (``results.json``'s ``balancing``), ``.drawing`` (the polygons; Jupyter shows them)."""
@@ -314,6 +337,7 @@ class Scene:
             raise missing_part(self, "balancing")
         return RotorBalancing(self)
 
+    @_on_a_scene
     def vibration_response(self) -> VibrationResponse:
         """The scene's ``[vibration]`` machine's steady vibration as a run works it out: ``.response`` (SI),
         ``.results`` (``results.json``'s ``vibration``), ``.magnification_plot``, ``.transmissibility_plot``."""
@@ -323,6 +347,7 @@ class Scene:
             raise missing_part(self, "vibration")
         return VibrationResponse(self)
 
+    @_on_a_scene
     def results(self, *, only: Sequence[str] | None = None, locale: str | None = None,
                 sheet: str | None = None) -> dict[str, Any]:
         """``results.json`` as :meth:`write` with the same ``only``, ``locale`` and ``sheet`` writes it, as a dict,
@@ -335,6 +360,7 @@ class Scene:
         _refuse_letter_lists(only=only)
         return results(self, only, locale, sheet, options=PYTHON, analysed=warn_of_slips, warn=warn_of)
 
+    @_on_a_scene
     def drawings(self, *, only: Sequence[str] | None = None, figures: bool = False, locale: str | None = None,
                  sheet: str | None = None) -> dict[str, NotebookDrawing]:
         """Every SVG file :meth:`write` with the same ``only``, ``figures``, ``locale`` and ``sheet`` writes, by its
@@ -351,6 +377,7 @@ class Scene:
                          warn=warn_of)
         return {name: Drawing(svg, png_dpi=PLOT_DPI if plot else None) for name, (svg, plot) in made.items()}
 
+    @_on_a_scene
     def write(self, folder: str | Path, *, only: Sequence[str] | None = None, formats: Sequence[str] = ("svg",),
               figures: bool = False, locale: str | None = None, sheet: str | None = None) -> Run:
         """Write the scene's run to ``folder`` as ``graphplan run SCENE --out FOLDER`` writes it, the same files

@@ -173,6 +173,24 @@ def test_solve_given_a_path_says_it_takes_a_scene():
         graphplan.solve(RATCHET, driver=[0.0])
 
 
+VERBS = ["solve", "analyse", "machine_dynamics", "balance", "vibration_response", "results", "drawings"]
+
+
+@pytest.mark.parametrize("verb", VERBS)
+def test_a_scenes_method_called_on_its_path_says_to_read_the_scene_first(verb):
+    # Scene.analyse("x.toml") was told that a string has no has_linkage.
+    with pytest.raises(TypeError) as raised:
+        getattr(graphplan.Scene, verb)(RATCHET)
+    assert str(raised.value) == f"Scene.{verb} is called on a scene, read first: graphplan.load({RATCHET!r}).{verb}(...)"
+
+
+def test_a_scenes_method_with_arguments_called_on_no_scene_says_so():
+    with pytest.raises(TypeError, match=r"^Scene\.plan is called on a scene, read first: graphplan\.load\('"):
+        graphplan.Scene.plan(Path(RATCHET), 3)
+    with pytest.raises(TypeError, match=r"^Scene\.write is called on a scene, as graphplan\.load\(path\) reads it \(got 3\)$"):
+        graphplan.Scene.write(3, "out")
+
+
 def test_positions_picked_by_index_must_be_indices_of_the_motion():
     motion = graphplan.solve(graphplan.load(RATCHET), driver=np.radians([0.0, 10.0, 20.0]))
     with pytest.raises(TypeError, match="list of integers"):
