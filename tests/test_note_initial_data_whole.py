@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 import tomllib
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -21,6 +22,21 @@ def _note(tmp_path: Path, scene: Path, locale: str) -> str:
     out = tmp_path / f"out-{locale}"
     assert main(["run", str(scene), "--out", str(out), "--only", "note", "--locale", locale]) == 0
     return (out / "note.md").read_text(encoding="utf-8")
+
+
+@pytest.fixture(scope="module")
+def note_of(tmp_path_factory) -> Callable[[Path, str], str]:
+    """:func:`_note`, each scene's text in each language run once for the module (the shaper starter's note is read
+    by two tests, a run of some three seconds each time)."""
+    made: dict[tuple[str, str], str] = {}
+
+    def note(scene: Path, locale: str) -> str:
+        key = (scene.read_text(encoding="utf-8"), locale)
+        if key not in made:
+            made[key] = _note(tmp_path_factory.mktemp("note"), scene, locale)
+        return made[key]
+
+    return note
 
 
 def _section(note: str, number: int) -> str:
@@ -50,10 +66,11 @@ def _shaper(tmp_path: Path) -> Path:
 @pytest.mark.parametrize("scene_of", (_shaper, lambda tmp_path: FIXTURES / "shaper_six_bar.toml",
                                       lambda tmp_path: FIXTURES / "offset_slider_crank.toml"),
                          ids=("shaper starter", "shaper_six_bar", "offset_slider_crank"))
-def test_every_mass_inertia_and_load_the_scene_gives_is_in_the_initial_data(tmp_path, capsys, locale, scene_of):
+def test_every_mass_inertia_and_load_the_scene_gives_is_in_the_initial_data(tmp_path, capsys, locale, scene_of,
+                                                                            note_of):
     scene = scene_of(tmp_path)
     given = tomllib.loads(scene.read_text(encoding="utf-8"))
-    note = _note(tmp_path, scene, locale)
+    note = note_of(scene, locale)
     capsys.readouterr()
     mark = MARK[locale]
     data = _section(note, 2)
@@ -86,10 +103,10 @@ def test_every_mass_inertia_and_load_the_scene_gives_is_in_the_initial_data(tmp_
 
 
 @pytest.mark.parametrize("locale", ("en", "ru"))
-def test_the_dynamics_delta_is_in_the_initial_data(tmp_path, capsys, locale):
+def test_the_dynamics_delta_is_in_the_initial_data(tmp_path, capsys, locale, note_of):
     scene = _shaper(tmp_path)
     delta = tomllib.loads(scene.read_text(encoding="utf-8"))["dynamics"]["delta"]
-    note = _note(tmp_path, scene, locale)
+    note = note_of(scene, locale)
     capsys.readouterr()
     rows = {row[1]: row[2] for row in _cells(_section(note, 2)) if len(row) == 3}
     assert rows["δ"] == _written(delta, MARK[locale])
