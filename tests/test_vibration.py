@@ -877,7 +877,8 @@ def test_a_speed_near_resonance_is_recorded_in_the_results_and_cautioned_in_the_
     assert f"X = {amplitude:.5g} m" in found["detail"]
     from graphplan.cli import main
 
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     caution = {"en": "Caution: there is no damping", "ru": "Внимание: демпфирования нет", "zh": "注意：系统无阻尼"}
     share = f"{abs(r - 1) * 100:.2g}".replace(".", "," if locale == "ru" else ".")
@@ -898,7 +899,8 @@ def test_isolating_mounts_no_spring_could_be_are_recorded_and_cautioned_in_the_n
     assert found["code"] == "mounts-sag" and f"would sag by M·g/k = {sag:.3g} m" in found["detail"]
     from graphplan.cli import main
 
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     caution = {"en": "Caution: the isolating mounts", "ru": "Внимание: рассчитанные выше виброизоляторы",
                "zh": "注意：上面算出的隔振器"}
@@ -942,7 +944,8 @@ def test_the_vibration_section_is_titled_by_what_excites_the_machine(tmp_path, c
     road = "mass = 1200.0\nunbalance = 0.0\nstiffness = 4.0e5\ndamping_ratio = 0.5\nomega = 5.8178\nbase_amplitude = 0.05\n"
     code, _ = _run(tmp_path, road, capsys)
     assert code == 0
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     (heading,) = re.findall(r"^## \d+\.? (.+)$", note, flags=re.MULTILINE)
     assert heading == base and rotor not in note
@@ -951,8 +954,8 @@ def test_the_vibration_section_is_titled_by_what_excites_the_machine(tmp_path, c
     assert f"= {natural:.5g} ".replace(".", mark) in note and f"{natural * 30 / math.pi:.5g}".replace(".", mark) in note
     (tmp_path / "both").mkdir()
     code, _ = _run(tmp_path / "both", road.replace("unbalance = 0.0", "unbalance = 0.5"), capsys)
-    assert main(["run", str(tmp_path / "both" / "machine.toml"), "--locale", locale, "--out",
-                 str(tmp_path / "both" / locale)]) == 0
+    assert main(["run", str(tmp_path / "both" / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / "both" / locale)]) == 0
     note = (tmp_path / "both" / locale / "note.md").read_text(encoding="utf-8")
     assert re.findall(r"^## \d+\.? (.+)$", note, flags=re.MULTILINE) == [both] and rotor in note
 
@@ -1018,7 +1021,8 @@ def test_a_disc_on_a_shaft_is_isolated_by_mounts_in_series_with_the_shaft(tmp_pa
     assert isolation["mount_stiffness"] == pytest.approx(mounts, rel=1e-9)
     from graphplan.cli import main
 
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     found = re.search(r"km = k·ks/\(ks − k\) = [^=]+ = (\d+(?:[.,]\d+)?) ", note)
     written = float(found.group(1).replace(",", "."))
@@ -1085,7 +1089,8 @@ def test_the_force_a_moving_bases_mounts_pass_is_given_beside_its_transmissibili
     assert document["transmitted_force"] == 0.0  # the unbalance's alone, as documented
     from graphplan.cli import main
 
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     found = re.search(r"TR·M·ω²·Y = [^=]+ = (\d+(?:[.,]\d+)?) [NН]", note)
     assert found and abs(float(found.group(1).replace(",", ".")) - force) <= 0.5 * 10 ** (math.floor(math.log10(force)) - 4)
@@ -1105,7 +1110,8 @@ def test_a_machine_at_resonance_is_said_to_run_at_it_not_within_nought_of_it(tmp
     assert f"X = {0.01 / 100.0 * magnification:.5g} m is {magnification:.5g} times m·e/M" in told.out
     from graphplan.cli import main
 
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     start = {"en": "Caution: the machine runs at resonance (r = 1)", "ru": "Внимание: машина работает в резонансе (r = 1)",
              "zh": "注意：机器在共振状态下运行（r = 1）"}[locale]
@@ -1206,7 +1212,8 @@ def test_an_instrument_shaken_near_resonance_is_told_of_its_base_not_of_a_speed_
     assert "run the machine" not in line
     from graphplan.cli import main
 
-    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--only", "note",
+                 "--out", str(tmp_path / locale)]) == 0
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     text = strings(locale)
     mark = "," if locale == "ru" else "."
