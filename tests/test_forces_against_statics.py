@@ -16,6 +16,7 @@ checked on their own.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import json
 import math
 from pathlib import Path
@@ -58,6 +59,8 @@ def loaded(scene):
     return dataclasses.replace(scene, links=MappingProxyType(links), loads=external)
 
 
+# Four tests read each case's analysis and equilibrium, which they leave as they are: made once.
+@functools.cache
 def solved(case: str):
     analysis = analyse(loaded(CASES[case]()))
     motion = analysis.motion
