@@ -7,6 +7,7 @@ for in every locale; the same run writes the same bytes twice."""
 
 from __future__ import annotations
 
+import functools
 import json
 import logging
 import re
@@ -381,6 +382,12 @@ def test_a_balancing_force_of_meganewtons_says_its_factor_as_a_textbook_writes_i
     np.testing.assert_allclose(drawn[:, 1], forces, atol=2e-3 * np.ptp(forces))
 
 
+@functools.cache
+def _analysis_of(path: Path):
+    """A fixture's analysis, made once for the three tests of its balancing plot, which leave it as it is."""
+    return analyse(graphplan.load(str(path)))
+
+
 def _outside(figure) -> list[str]:
     """The position numbers written over the points of the balancing plot that cross its frame."""
     from matplotlib.text import Annotation
@@ -407,7 +414,7 @@ def test_no_position_number_on_the_balancing_plot_runs_into_its_frame(path):
     from graphplan.report.plot_style import settings
 
     with matplotlib.rc_context(settings()):
-        figure = _balancing_figure(analyse(graphplan.load(str(path))))
+        figure = _balancing_figure(_analysis_of(path))
         assert not _outside(figure)
         assert not _tick_labels_say_their_values(figure)
 
@@ -421,7 +428,7 @@ def test_a_cranks_balancing_plot_is_ticked_every_30_degrees_as_its_positions_sta
     from graphplan.report.figures import _balancing_figure
     from graphplan.report.plot_style import settings
 
-    analysis = analyse(graphplan.load(str(path)))
+    analysis = _analysis_of(path)
     with matplotlib.rc_context(settings()):
         figure = _balancing_figure(analysis)
         ticks = figure.axes[0].get_xticks()
@@ -462,7 +469,7 @@ def test_a_position_number_stands_clear_of_the_square_of_its_force_polygon(path)
     from graphplan.report.plot_style import settings
 
     with matplotlib.rc_context(settings()):
-        figure = _balancing_figure(analyse(graphplan.load(str(path))))
+        figure = _balancing_figure(_analysis_of(path))
         assert [line for line in figure.axes[0].get_lines() if line.get_marker() == "s"]
         assert not _on_squares(figure)
         assert not _outside(figure)
