@@ -271,12 +271,17 @@ def label_on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], l
     """Whether the placed label of ``anchor`` lies on one of the drawn ``lines`` or on another label's leader (its
     own starts by its point), or is led to across one of the ``shafts`` (the loads' arrows)."""
     box = text_box(text)
-    others = [LineString(leader.points) for leader in leaders if not led_from(leader, anchor)]
-    if any(box.intersects(line) for line in [*lines, *others]):
+    # Asked of every label of a sheet, against every line and leader: the leaders' own ones found once, the lines met
+    # in one call.
+    along = None if anchor.along is None else LineString(anchor.along)
+    its_own = [_led_from(leader, anchor.at, along) for leader in leaders]
+    others = [LineString(leader.points) for leader, own in zip(leaders, its_own, strict=True) if not own]
+    met = [*lines, *others]
+    if met and shapely.intersects(box, np.array(met, dtype=object)).any():
         return True
     # Its own leader: from by its point to by its box (the placer stops it short of the box).  Across an arrow it
     # reads as part of that arrow, or as naming that load, as a name on a line reads as naming the line.
-    own = [LineString(leader.points) for leader in leaders if led_from(leader, anchor)
+    own = [LineString(leader.points) for leader, mine in zip(leaders, its_own, strict=True) if mine
            and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
     return any(leader.intersects(shaft) for leader in own for shaft in shafts)
 
@@ -284,10 +289,15 @@ def label_on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], l
 def led_from(leader: Polyline, anchor: Anchor) -> bool:
     """Whether ``leader`` is the one led from ``anchor``'s point: a placed leader starts by the point it names, or by
     another point of the line it names (its ``along``: a polygon's side's name led from a clear stretch of it)."""
+    return _led_from(leader, anchor.at, None if anchor.along is None else LineString(anchor.along))
+
+
+def _led_from(leader: Polyline, at: tuple[float, float], along: LineString | None) -> bool:
+    """:func:`led_from`, the ``along`` line made by the caller."""
     start = leader.points[0]
-    if math.dist(start, anchor.at) <= 1.0:
+    if math.dist(start, at) <= 1.0:
         return True
-    return anchor.along is not None and LineString(anchor.along).distance(ShapelyPoint(start)) <= 1.0
+    return along is not None and along.distance(ShapelyPoint(start)) <= 1.0
 
 
 def arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> float:
