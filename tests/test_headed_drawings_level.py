@@ -57,8 +57,8 @@ def side_by_side_not_level(sheets) -> list[tuple]:
     return found
 
 
-# Every scene once, in English and Russian by turns: the longer Russian headings are tried on half the scenes (both
-# languages on every scene laid out 38 sheets, a second of the suite's wall time in forty).
+# Every scene once, in English and Russian by turns: the longer Russian headings are tried on half the scenes.  Both
+# languages on every scene laid out 38 sets of A1 sheets, half a minute of the suite's time.
 SCENES = [*(f"new:{kind}" for kind in STARTERS), *(path.name for path in sorted(FIXTURES.glob("*.toml")))]
 CASES = [(name, ("en", "ru")[k % 2]) for k, name in enumerate(SCENES)]
 
