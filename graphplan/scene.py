@@ -218,17 +218,13 @@ class Project:
 
 
 def _on_a_scene(verb: Callable[..., Any]) -> Callable[..., Any]:
-    """``verb``, a scene's method, refusing with a TypeError what is not a scene: ``Scene.analyse("x.toml")`` told
-    that a string has no ``has_linkage``, as solve's plain function tells its caller what it takes."""
+    """``verb``, a scene's method, refusing what is not a scene as the plain functions do (:func:`not_a_scene`):
+    ``Scene.analyse("x.toml")`` was told that a string has no ``has_linkage``."""
 
     @functools.wraps(verb)
     def checked(self: Any, *args: Any, **kwargs: Any) -> Any:
-        if isinstance(self, str | os.PathLike):
-            raise TypeError(f"Scene.{verb.__name__} is called on a scene, read first: "
-                            f"graphplan.load({os.fspath(self)!r}).{verb.__name__}(...)")
         if not isinstance(self, Scene):
-            raise TypeError(f"Scene.{verb.__name__} is called on a scene, as graphplan.load(path) reads it "
-                            f"(got {self!r})")
+            raise not_a_scene(f"Scene.{verb.__name__}", self)
         return verb(self, *args, **kwargs)
 
     return checked
@@ -435,13 +431,18 @@ def missing_part(scene: Scene, part: str) -> SceneError:
 
 def not_a_scene(verb: str, value: Any) -> TypeError:
     """The error of ``verb`` given something other than a scene: the value shown where it is short (a mechanism's
-    repr printed its whole scene, 3 000 characters), and where it has a scene, where that is."""
+    repr printed its whole scene, 3 000 characters); where it is a scene file's path, to read it first; where it has
+    a scene, where that is."""
     shown = repr(value)
     if len(shown) > 100:
         name = type(value).__name__
         shown = f"{'an' if name[:1] in 'AEIOU' else 'a'} {name}"
-    hint = f"; its scene is {type(value).__name__.lower()}.scene" if isinstance(getattr(value, "scene", None), Scene) \
-        else ""
+    if isinstance(value, str | os.PathLike):  # a scene file's path, given for the scene read from it
+        hint = f"; read it first: graphplan.load({os.fspath(value)!r})"
+    elif isinstance(getattr(value, "scene", None), Scene):
+        hint = f"; its scene is {type(value).__name__.lower()}.scene"
+    else:
+        hint = ""
     return TypeError(f"{verb} takes a scene, as graphplan.load(path) reads it (got {shown}){hint}")
 
 

@@ -171,6 +171,8 @@ def test_a_driver_that_is_not_plain_numbers_is_refused(driver):
 def test_solve_given_a_path_says_it_takes_a_scene():
     with pytest.raises(TypeError, match=r"solve takes a scene, as graphplan.load\(path\) reads it \(got 'fix"):
         graphplan.solve(RATCHET, driver=[0.0])
+    with pytest.raises(TypeError, match=rf"; read it first: graphplan\.load\('{RATCHET}'\)$"):
+        graphplan.solve(RATCHET, driver=[0.0])
 
 
 VERBS = ["solve", "analyse", "machine_dynamics", "balance", "vibration_response", "results", "drawings"]
@@ -181,13 +183,14 @@ def test_a_scenes_method_called_on_its_path_says_to_read_the_scene_first(verb):
     # Scene.analyse("x.toml") was told that a string has no has_linkage.
     with pytest.raises(TypeError) as raised:
         getattr(graphplan.Scene, verb)(RATCHET)
-    assert str(raised.value) == f"Scene.{verb} is called on a scene, read first: graphplan.load({RATCHET!r}).{verb}(...)"
+    assert str(raised.value) == (f"Scene.{verb} takes a scene, as graphplan.load(path) reads it (got {RATCHET!r}); "
+                                 f"read it first: graphplan.load({RATCHET!r})")
 
 
 def test_a_scenes_method_with_arguments_called_on_no_scene_says_so():
-    with pytest.raises(TypeError, match=r"^Scene\.plan is called on a scene, read first: graphplan\.load\('"):
+    with pytest.raises(TypeError, match=r"^Scene\.plan takes a scene, .*; read it first: graphplan\.load\('fixtures/"):
         graphplan.Scene.plan(Path(RATCHET), 3)
-    with pytest.raises(TypeError, match=r"^Scene\.write is called on a scene, as graphplan\.load\(path\) reads it \(got 3\)$"):
+    with pytest.raises(TypeError, match=r"^Scene\.write takes a scene, as graphplan\.load\(path\) reads it \(got 3\)$"):
         graphplan.Scene.write(3, "out")
 
 
