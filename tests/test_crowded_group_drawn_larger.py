@@ -24,7 +24,9 @@ CROWDED_STAR = ROOT / "tests" / "scenes" / "triad_crowded_star_zh.toml"
 
 
 def _crowded(sheet: force_layout.ForceSheet) -> list[str]:
-    return [group.label for group in sheet.forces.groups if force_bodies.body(sheet, group).labels_crowded]
+    """The groups whose names find no room apart, by the predicate the sheets' parting uses."""
+    return [group.label for group in sheet.forces.groups
+            if force_bodies.labels_cover_one_another(force_bodies.body(sheet, group))]
 
 
 def _written_length_scales(layers) -> list[str]:
