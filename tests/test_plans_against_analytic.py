@@ -175,6 +175,7 @@ def test_every_image_rate_and_slide_agrees_with_the_analytic_solution(case, inde
 SLIDING_FIXTURES = ["scotch_yoke", "tangent_mechanism_prp"]
 
 
+@functools.cache
 def _a_group_slides(case: str) -> bool:
     """Whether a group of the case has a sliding pair, read off the scene (the analysis agrees, checked above)."""
     return any("P" in group.kind or (group.kind == "triad" and (any(group.leg_guides) or any(group.leg_slots)))
