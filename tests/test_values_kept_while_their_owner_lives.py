@@ -63,3 +63,17 @@ def test_a_failed_making_keeps_nothing():
         pass
     assert len(memo) == 0
     assert memo.get(owner, "k", lambda: 5) == 5
+
+
+def test_an_owner_made_after_another_is_gone_has_its_values_given_up_too(only_new_objects_collected):
+    """The memo watches each owner once, however many keys it has; an owner made once the last is gone (often at
+    the same address, so with the same id) is watched afresh."""
+    memo: OwnedMemo[int] = OwnedMemo()
+    for _ in range(5):
+        owner = Owner()
+        for key in range(3):
+            memo.get(owner, key, lambda: 0)
+        assert len(memo) == 3
+        del owner
+        gc.collect()
+        assert len(memo) == 0
