@@ -8,7 +8,30 @@ the scene, the joint, the position.
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import math
+from collections.abc import Iterator
+
+# Set while a caller asks only whether a step refuses, not what it says (the reach advice trying swings, whose
+# refusals only say to try the next): what a refusal works out only to tell (the reach of a crank, the pole distance
+# that would fit) is left out there.
+_VERDICT_ONLY: contextvars.ContextVar[bool] = contextvars.ContextVar("verdict_only", default=False)
+
+
+@contextlib.contextmanager
+def verdict_only() -> Iterator[None]:
+    """Within it, a refusal raised is only caught and dropped: its words may leave out what they would offer."""
+    token = _VERDICT_ONLY.set(True)
+    try:
+        yield
+    finally:
+        _VERDICT_ONLY.reset(token)
+
+
+def words_wanted() -> bool:
+    """Whether a refusal's words will be read (not within :func:`verdict_only`)."""
+    return not _VERDICT_ONLY.get()
 
 
 class GraphplanError(Exception):

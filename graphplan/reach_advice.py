@@ -8,7 +8,6 @@ can paste back (the swing advised is one the run itself accepts, found by analys
 from __future__ import annotations
 
 import contextlib
-import contextvars
 import functools
 import math
 from collections.abc import Callable, Iterator
@@ -16,7 +15,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from .errors import AssemblyError, GraphplanError, SingularPositionError, as_written
+from .errors import AssemblyError, GraphplanError, SingularPositionError, as_written, verdict_only, words_wanted
 from .groups.base import Group
 from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
@@ -26,11 +25,6 @@ from .rounding import noise_floor
 from .scene import Scene
 from .unit_slips import angles_in_radians
 
-# Set while _swing_that_runs tries the scene rocking over a swing: a trial's refusal only says to try the next
-# swing, and its words are dropped, so the reach and advice a refusal is told with are not worked out for it (they
-# took the crank's reach again, some 720 solves of a triad, for every swing tried).
-_TRYING_SWINGS: contextvars.ContextVar[bool] = contextvars.ContextVar("trying_swings", default=False)
-
 
 @contextlib.contextmanager
 def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[None]:
@@ -39,7 +33,9 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
     try:
         yield
     except AssemblyError as error:
-        if _TRYING_SWINGS.get():
+        # Within _swing_that_runs's trials the words are dropped: the reach and advice are not worked out for them
+        # (they took the crank's reach again, some 720 solves of a triad, for every swing tried).
+        if not words_wanted():
             raise
         keys = keys_setting(mechanism, error.group)
         advised = _advised(mechanism, error, first, keys)
@@ -424,13 +420,11 @@ def _swing_that_runs(scene: Scene, low: float, high: float) -> tuple[int, int] |
             return None
         # The scene as the advice changes it (_rocking_changes), rocking over the swing.
         rocking = replace(scene, driver=replace(driver, swing=(math.radians(first), math.radians(last))))
-        trying = _TRYING_SWINGS.set(True)
         try:
-            analysis = analyse(rocking)
-            refuse_as_run_would(rocking, analysis, chosen(rocking, analysis))
+            with verdict_only():  # a trial's refusal only says to try the next swing
+                analysis = analyse(rocking)
+                refuse_as_run_would(rocking, analysis, chosen(rocking, analysis))
         except GraphplanError:
             continue
-        finally:
-            _TRYING_SWINGS.reset(trying)
         return first, last
     return None

@@ -463,6 +463,19 @@ def test_a_plan_too_big_for_a4_names_the_largest_pole_distance_that_fits():
     assert named_pole(one_more, "acceleration") == fitting
 
 
+def test_a_refusal_only_weighed_leaves_out_the_pole_distance_it_would_offer_and_offers_it_after():
+    """The reach advice tries swings only to see whether the run refuses them: there the shaper's plan on A4 is
+    refused alike, with no pole distance worked out (a halving of laid-out plans, most of a trial's time); outside
+    that, the same refusal names it again."""
+    from graphplan.errors import verdict_only
+
+    with verdict_only(), pytest.raises(SceneError) as weighed:
+        on_a4("shaper_six_bar")
+    assert weighed.value.where == "drawing.sheet" and "'plan-10-acceleration' (197 × 195 mm)" in str(weighed.value)
+    assert "acceleration_pole = " in str(weighed.value) and "(or less)" not in str(weighed.value)
+    assert 50 < named_pole(refusal_on_a4("shaper_six_bar"), "acceleration") < 100
+
+
 def test_a_plan_at_the_program_s_scale_too_big_for_a4_names_a_pole_distance_that_fits():
     """The triad's acceleration plan of position 1 at the μa the program chose is 166 mm wide, 2 mm more than an
     upright A4 holds: the error named no key to change (a student's A4 run), and now the pole distance that fits,

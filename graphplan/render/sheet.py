@@ -35,7 +35,7 @@ from dataclasses import asdict, dataclass, replace
 import shapely
 
 from ..analysis import Analysis, PlanPosition
-from ..errors import SceneError
+from ..errors import SceneError, words_wanted
 from ..load_diagrams import LoadDiagram
 from ..locale import Count, strings
 from ..memo import OwnedMemo
@@ -1686,7 +1686,7 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
 
     if given_scale is not None:
         scale = standard_scale(given_scale)
-        for _ in range(_LARGER_SCALES_TRIED):
+        for _ in range(_LARGER_SCALES_TRIED if words_wanted() else 0):  # no fix tried where none is read
             if all(fits(position, scale) for position in positions):
                 return (f"drawing.{kind}_scale = {format_scale(given_scale)}",
                         f"drawing.{kind}_scale = {format_scale(scale)} (or more)")
@@ -1697,7 +1697,7 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
     setting = f"drawing.{kind}_pole = {pole:g} mm" if pole is not None else \
         f"{kind} scale " + strings("en")[f"{kind}_scale"].format(
             value=scale_factor(getattr(positions[0], kind).scale)) + " (the program's)"
-    if not all(pa > 0 for pa in driven):
+    if not all(pa > 0 for pa in driven) or not words_wanted():  # no fix to find, or none read
         return setting, None
     # A plan grows with its pole distance: for each position the largest whole millimetre that fits, by halving,
     # from the scene's pole distance or the one the program's scale draws (a small sheet's fix the error named
