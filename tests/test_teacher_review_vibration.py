@@ -24,6 +24,7 @@ import pytest
 from scipy.optimize import brentq
 from sheet_texts import flat
 
+from graphplan.run import results as run_results
 from graphplan.run import run
 from graphplan.scales import standard_scale
 from graphplan.scene import loads as scene_from_text
@@ -38,6 +39,15 @@ def _written(tmp_path, text: str, name: str = "out") -> tuple[dict, str, dict[st
     svgs = {path.stem: path.read_text(encoding="utf-8") for path in folder.glob("*.svg")}
     return (json.loads((folder / "results.json").read_text(encoding="utf-8")),
             (folder / "note.md").read_text(encoding="utf-8"), svgs)
+
+
+def _told(tmp_path, text: str, name: str = "out") -> tuple[dict, str]:
+    """results.json and note.md of a run of the scene ``text``, for a test that reads no drawing: the results as the
+    run writes them (graphplan.run.results, tests/test_run_in_memory.py) and the note of a run of the note alone,
+    its text the whole run's without the figures.  The two plots a vibration run draws were most of its time."""
+    scene = scene_from_text(text)
+    run(scene, tmp_path / name, only=["note"])
+    return run_results(scene), (tmp_path / name / "note.md").read_text(encoding="utf-8")
 
 
 def _product(mass: float, radius: float, angle_deg: float) -> complex:
@@ -108,7 +118,7 @@ IN_PLANES_MASSES = [(1.0, 0.2, 45.0, 0.1), (2.0, 0.05, 180.0, 0.1), (0.5, 0.3, 2
 
 
 def test_a_discs_one_correction_closes_the_polygon_of_its_masses(tmp_path):
-    results, _, _ = _written(tmp_path, DISC)
+    results, _ = _told(tmp_path, DISC)
     balancing = results["balancing"]
     correction = -sum(_product(m, r, a) for m, r, a, _ in DISC_MASSES)
     (plane,) = balancing["planes"]
@@ -128,7 +138,7 @@ def test_a_discs_one_correction_closes_the_polygon_of_its_masses(tmp_path):
                                                       (IN_PLANES, IN_PLANES_MASSES, (0.25, 0.25))],
                          ids=["outside-and-between", "in-the-planes"])
 def test_two_corrections_balance_the_force_and_the_moment_of_a_long_rotor(tmp_path, text, masses, radii):
-    results, _, _ = _written(tmp_path, text)
+    results, _ = _told(tmp_path, text)
     balancing = results["balancing"]
     left, right = (plane["position"] for plane in balancing["planes"])
     expected = _two_plane_corrections(masses, left, right)
@@ -153,7 +163,7 @@ def test_two_corrections_balance_the_force_and_the_moment_of_a_long_rotor(tmp_pa
 
 def test_masses_in_the_correction_planes_load_only_their_own_plane(tmp_path):
     """Артоболевский: a mass in a correction plane is balanced in that plane alone; each plane is then a disc."""
-    results, note, _ = _written(tmp_path, IN_PLANES)
+    results, note = _told(tmp_path, IN_PLANES)
     left, right = results["balancing"]["planes"]
     own_left = -(_product(1.0, 0.2, 45.0) + _product(2.0, 0.05, 180.0))
     own_right = -_product(0.5, 0.3, 270.0)
@@ -169,7 +179,7 @@ def test_masses_in_the_correction_planes_load_only_their_own_plane(tmp_path):
 def test_an_overhung_mass_pulls_the_far_plane_against_its_sense_in_the_notes_table(tmp_path):
     """A mass outside the planes: its share in the far plane is its m·r times −(distance outside)/(spacing),
     found from the moment about the near plane; one between them shares (zR − z)/(zR − zL) and (z − zL)/(zR − zL)."""
-    _, note, _ = _written(tmp_path, LONG)
+    _, note = _told(tmp_path, LONG)
     table = note.split("\nTable 2. ")[1].split("\n\n")[1]
     rows = {row.split("|")[1].strip(): [float(cell.replace("−", "-")) for cell in row.split("|")[2:-1]]
             for row in table.splitlines()[2:]}
@@ -312,7 +322,7 @@ def _vibration_scene(**keys) -> str:
 @pytest.mark.parametrize("rpm", [150.0, 250.0, 420.0, 900.0])
 def test_amplitude_lag_magnification_and_force_are_the_complex_amplitudes(tmp_path, zeta, rpm):
     mass, unbalance, stiffness = 200.0, 0.05, 2.0e5
-    results, note, _ = _written(tmp_path, _vibration_scene(mass=mass, unbalance=unbalance, stiffness=stiffness,
+    results, note = _told(tmp_path, _vibration_scene(mass=mass, unbalance=unbalance, stiffness=stiffness,
                                                            damping_ratio=zeta, rpm=rpm))
     vibration = results["vibration"]
     omega = rpm * 2 * math.pi / 60
@@ -332,8 +342,8 @@ def test_amplitude_lag_magnification_and_force_are_the_complex_amplitudes(tmp_pa
 
 
 def test_without_damping_the_motion_is_in_phase_below_resonance_and_opposite_above(tmp_path):
-    below, _, _ = _written(tmp_path, _vibration_scene(mass=200.0, unbalance=0.05, stiffness=2.0e5, rpm=150.0), "a")
-    above, _, _ = _written(tmp_path, _vibration_scene(mass=200.0, unbalance=0.05, stiffness=2.0e5, rpm=900.0), "b")
+    below, _ = _told(tmp_path, _vibration_scene(mass=200.0, unbalance=0.05, stiffness=2.0e5, rpm=150.0), "a")
+    above, _ = _told(tmp_path, _vibration_scene(mass=200.0, unbalance=0.05, stiffness=2.0e5, rpm=900.0), "b")
     assert below["vibration"]["phase_deg"] == 0.0
     assert above["vibration"]["phase_deg"] == 180.0
     for results in (below, above):
@@ -344,7 +354,7 @@ def test_without_damping_the_motion_is_in_phase_below_resonance_and_opposite_abo
 
 @pytest.mark.parametrize("zeta", [0.05, 0.2, 0.7])
 def test_at_resonance_the_magnification_is_one_over_two_zeta_and_the_lag_a_quarter_turn(tmp_path, zeta):
-    results, note, _ = _written(tmp_path, _vibration_scene(mass=100.0, unbalanced_mass=2.0, eccentricity=0.01,
+    results, note = _told(tmp_path, _vibration_scene(mass=100.0, unbalanced_mass=2.0, eccentricity=0.01,
                                                            stiffness=1.0e5, damping_ratio=zeta,
                                                            omega=math.sqrt(1000.0)))
     vibration = results["vibration"]
@@ -358,7 +368,7 @@ def test_at_resonance_the_magnification_is_one_over_two_zeta_and_the_lag_a_quart
 
 @pytest.mark.parametrize("zeta", [0.0, 0.1, 0.5, 2.0])
 def test_the_transmissibility_is_one_at_root_two_whatever_the_damping(tmp_path, zeta):
-    results, _, _ = _written(tmp_path, _vibration_scene(mass=50.0, unbalance=0.01, stiffness=5.0e4,
+    results, _ = _told(tmp_path, _vibration_scene(mass=50.0, unbalance=0.01, stiffness=5.0e4,
                                                         damping_ratio=zeta, omega=math.sqrt(2.0) * math.sqrt(1000.0)))
     assert results["vibration"]["transmissibility"] == pytest.approx(1.0, rel=1e-9)
 
@@ -393,7 +403,7 @@ def _force_transmissibility(r: float, zeta: float) -> float:
 @pytest.mark.parametrize(("wanted", "zeta"), [(0.2, 0.0), (0.2, 0.1), (0.1, 0.2), (0.05, 0.5), (0.5, 0.05)])
 def test_the_isolating_mounts_pass_the_wanted_share_of_the_force(tmp_path, wanted, zeta):
     mass, omega = 100.0, 60.0 * math.pi
-    results, note, _ = _written(tmp_path, _vibration_scene(mass=mass, unbalance=0.02, stiffness=1.0e5,
+    results, note = _told(tmp_path, _vibration_scene(mass=mass, unbalance=0.02, stiffness=1.0e5,
                                                            damping_ratio=zeta, omega=omega, transmissibility=wanted))
     isolation = results["vibration"]["isolation"]
     ratio = brentq(lambda r: _force_transmissibility(r, zeta) - wanted, math.sqrt(2.0) + 1e-9, 1e4, xtol=1e-14)
@@ -408,7 +418,7 @@ def test_the_isolating_mounts_pass_the_wanted_share_of_the_force(tmp_path, wante
 
 def test_a_base_shaking_an_instrument_moves_it_as_the_complex_amplitude_says(tmp_path):
     mass, stiffness, c, omega, base = 50.0, 5.0e4, 300.0, 60.0, 0.002
-    results, note, _ = _written(tmp_path, _vibration_scene(mass=mass, unbalance=0.0, stiffness=stiffness, damping=c,
+    results, note = _told(tmp_path, _vibration_scene(mass=mass, unbalance=0.0, stiffness=stiffness, damping=c,
                                                            omega=omega, base_amplitude=base))
     vibration = results["vibration"]
     impedance = complex(stiffness - mass * omega ** 2, c * omega)
@@ -426,7 +436,7 @@ def test_a_base_shaking_an_instrument_moves_it_as_the_complex_amplitude_says(tmp
 
 def test_an_unbalance_on_a_shaken_base_adds_the_two_motions(tmp_path):
     mass, unbalance, stiffness, zeta, omega, base = 50.0, 0.01, 5.0e4, 0.15, 20.0, 0.002
-    results, _, _ = _written(tmp_path, _vibration_scene(mass=mass, unbalance=unbalance, stiffness=stiffness,
+    results, _ = _told(tmp_path, _vibration_scene(mass=mass, unbalance=unbalance, stiffness=stiffness,
                                                         damping_ratio=zeta, omega=omega, base_amplitude=base))
     c = 2 * zeta * math.sqrt(stiffness * mass)
     impedance = complex(stiffness - mass * omega ** 2, c * omega)
@@ -450,7 +460,7 @@ def test_a_discs_critical_speed_on_its_shaft_is_that_of_its_static_deflection(tm
     table = ", ".join(f"{key} = {value!r}".replace("'", '"') for key, value in shaft.items())
     text = _vibration_scene(mass=mass, unbalance=0.0004, damping_ratio=0.02, rpm=3000.0).replace(
         "[vibration]", f"[vibration]\nshaft = {{ {table} }}")
-    results, _, _ = _written(tmp_path, text)
+    results, _ = _told(tmp_path, text)
     second = math.pi * diameter ** 4 / 64
     weight = mass * G
     if support == "simply_supported":
@@ -532,7 +542,7 @@ def test_the_transmissibility_plot_names_the_isolating_design_point_as_the_resul
 def test_the_note_says_from_where_and_which_way_the_corrections_angles_are_counted(tmp_path, locale, sense):
     """A correction's θ = 199.2° is no use to the fitter without its reference and sense: the same line on the rotor
     and the same sense as the masses' θ (the polygons draw them counter-clockwise from a dashed x-direction)."""
-    results, note, _ = _written(tmp_path, LONG.replace('title = "Long rotor"', f'title = "Long rotor"\nlocale = "{locale}"'))
+    results, note = _told(tmp_path, LONG.replace('title = "Long rotor"', f'title = "Long rotor"\nlocale = "{locale}"'))
     section = note.split("\n## ")[1]
     assert sense in section
     before_corrections = section.split("mLrL = ")[0]
@@ -608,7 +618,7 @@ def test_the_note_says_the_shafts_own_mass_is_left_out_of_its_critical_speed(tmp
     text = _vibration_scene(mass=20.0, unbalance=0.0004, damping_ratio=0.02, rpm=3000.0).replace(
         "[vibration]", "[vibration]\nshaft = { modulus = 2.1e11, diameter = 0.03, length = 0.8 }").replace(
         '[vibration]', f'locale = "{locale}"\n[vibration]', 1)
-    _, note, _ = _written(tmp_path, text)
+    _, note = _told(tmp_path, text)
     assert words in note
 
 
