@@ -731,6 +731,15 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                 symbol = load_symbol(term.name, sheet.text)
                 parts.append(f"{sign_mark(term.moment)} {symbol if couple else f'M({symbol})'}")
         line = _equation(sheet, group, equation, parts)
+        unknown = equation.unknown
+        if line and unknown in drawn and unknown != "Mb" and not unknown.endswith("·x") \
+                and _unknown_arm(sheet, group, equation) == "h" and equation.arm / sheet.length_scale >= ZERO_MM:
+            # Drawn as the knowns' arms are: given by its length alone, the student had no line to measure it on.
+            start, end, unit = drawn[unknown]
+            items += arm_with_run_on(centre, start, end, unit)
+            foot = perpendicular_foot(centre, start, unit)
+            anchors.append(Anchor(_xy((centre + foot) / 2), "h", ARM_NAME_SIZE, direction_rad(1j * (foot - centre)),
+                                  ARM.colour, along=(_xy(centre), _xy(foot))))
         if line:
             lines.append(line)
             # Said to be too short, as the lever says it of its arms: a bare h2 = 0.1088 mm sent the reader looking
@@ -783,21 +792,27 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
                 f"{text['newton_metre']}")
     # The unknown's sense as first assumed: its moment balances the others'.
     sign = "" if equation.value == 0 or -total / equation.value >= 0 else "−"
-    joint = next((found.joint for found in group.found
-                  if unknown.rstrip("τn") in (f"R{found.source}{found.target}", f"R{found.target}{found.source}")),
-                 None)
-    # The arm is named by the segment from the centre to the joint only where it is that segment (a τ part square
-    # to its link); an unknown at an angle to it (a guide's normal reaction about Assur's point) has an arm h.
-    arm = "h"
-    if joint is not None and joint != equation.about and all(map(_one_letter, (joint, equation.about))):
-        segment = abs(sheet.positions[joint] - sheet.positions[equation.about])
-        if abs(segment - equation.arm) <= 1e-9 * segment:
-            arm = "".join(sorted((joint, equation.about)))
-    # An arm h is no segment of the drawing: its length is given, or the equation names an h found nowhere.  Drawn,
-    # it crowded the arms round Assur's point until two names on the triad's A4 sheet ran together.
+    arm = _unknown_arm(sheet, group, equation)
+    # An arm h is no segment of the drawing: drawn as the others are (:func:`_arms`), its length is also given, as
+    # the note gives it, the unknown's value following from it.
     length = f",  h = {significant(equation.arm / sheet.length_scale)} {text['millimetre']}" if arm == "h" else ""
     return (f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {significant(equation.value)} {text['newton']}"
             f"{length}")
+
+
+def _unknown_arm(sheet: ForceSheet, group: GroupForces, equation: MomentEquation) -> str:
+    """The name of the arm of an unknown force in ``equation``: the segment from the centre to its joint where it is
+    that segment (a τ part square to its link), else ``h`` (a guide's normal reaction about Assur's point, at an
+    angle to the segment)."""
+    unknown = equation.unknown
+    joint = next((found.joint for found in group.found
+                  if unknown.rstrip("τn") in (f"R{found.source}{found.target}", f"R{found.target}{found.source}")),
+                 None)
+    if joint is not None and joint != equation.about and all(map(_one_letter, (joint, equation.about))):
+        segment = abs(sheet.positions[joint] - sheet.positions[equation.about])
+        if abs(segment - equation.arm) <= 1e-9 * segment:
+            return "".join(sorted((joint, equation.about)))
+    return "h"
 
 
 def _projection(sheet: ForceSheet, equation: ProjectionEquation) -> str:
