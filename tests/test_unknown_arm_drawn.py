@@ -44,6 +44,14 @@ def _arms_of_unknowns(svg: Path) -> list[tuple[str, float, list[list[complex]], 
     return found
 
 
+def _square_onto(arm: list[complex], start: complex, along: complex) -> bool:
+    """Whether ``arm`` (centre to foot) ends on the line through ``start`` along the unit ``along``, square to it."""
+    centre, foot = arm[0], arm[-1]
+    off_line = abs(((foot - start) * along.conjugate()).imag)
+    slant = abs(((foot - centre) / abs(foot - centre) * along.conjugate()).real)
+    return off_line < 0.01 and slant < 1e-3
+
+
 @pytest.mark.parametrize("fixture", ["triad_class_iii", "triad_with_slider"])
 def test_the_unknown_s_arm_h_is_drawn_square_to_its_line_as_long_as_the_caption_gives_it(tmp_path, fixture):
     out = tmp_path / "out"
@@ -57,13 +65,7 @@ def test_the_unknown_s_arm_h_is_drawn_square_to_its_line_as_long_as_the_caption_
             start, end = shaft[0], shaft[-1]
             along = (end - start) / abs(end - start)
 
-            def square_onto_the_line(arm: list[complex]) -> bool:
-                foot, centre = arm[-1], arm[0]
-                off_line = abs(((foot - start) * along.conjugate()).imag)
-                slant = abs(((foot - centre) / abs(foot - centre) * along.conjugate()).real)
-                return off_line < 0.01 and slant < 1e-3
-
-            drawn = [abs(arm[-1] - arm[0]) for arm in arms if len(arm) == 2 and square_onto_the_line(arm)]
+            drawn = [abs(arm[-1] - arm[0]) for arm in arms if len(arm) == 2 and _square_onto(arm, start, along)]
             assert any(abs(length - h) <= 5e-4 * h + 0.002 for length in drawn), (svg.name, unknown, h, drawn)
             checked += 1
     assert checked >= 2

@@ -732,9 +732,10 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                 parts.append(f"{sign_mark(term.moment)} {symbol if couple else f'M({symbol})'}")
         line = _equation(sheet, group, equation, parts)
         unknown = equation.unknown
-        if line and unknown in drawn and unknown != "Mb" and not unknown.endswith("·x") \
-                and _unknown_arm(sheet, group, equation) == "h" and equation.arm / sheet.length_scale >= ZERO_MM:
-            # Drawn as the knowns' arms are: given by its length alone, the student had no line to measure it on.
+        # An unknown force's arm h drawn as the knowns' arms are (a couple, Mb or R14·x, is no arrow drawn): given
+        # by its length alone, the student had no line to measure it on.
+        if line and unknown in drawn and _unknown_arm(sheet, group, equation) == "h" \
+                and equation.arm / sheet.length_scale >= ZERO_MM:
             start, end, unit = drawn[unknown]
             items += arm_with_run_on(centre, start, end, unit)
             foot = perpendicular_foot(centre, start, unit)
