@@ -637,13 +637,27 @@ def turns_round(mechanism: Mechanism) -> bool:
     with contextlib.suppress(AssemblyError, SingularPositionError):
         solve(mechanism, _turn_grid(), reference_at(mechanism, first_value(mechanism)), tolerant=True)
         return True
+    # Asked spread over the turn, halving the gaps (0°, 256°, 128°, …), not from 0° up: an angle it does not reach
+    # lies in a range of them, which the spread meets within a few asks where the climb took hundreds (a second of
+    # the advice's each length a digit off).  Each angle's answer is its own, walked to from the first position's
+    # assembly whatever was asked before, so the order changes no answer.
     assembles = _assembles(mechanism, None)
-    return all(assembles(float(value)) for value in _turn_grid())
+    return all(assembles(float(value)) for value in _turn_grid()[_SPREAD])
 
 
 def _turn_grid() -> np.ndarray:
     """The crank angles (rad) :func:`reach` and :func:`turns_round` ask, round the turn from 0."""
     return 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
+
+
+def _spread_order(count: int) -> np.ndarray:
+    """``range(count)`` ordered by its indices' bits read backwards: each next index halves a gap the ones before
+    it leave (0, 512, 256, 128, 640, … of 720)."""
+    bits = max(1, (count - 1).bit_length())
+    return np.array(sorted(range(count), key=lambda index: int(f"{index:0{bits}b}"[::-1], 2)))
+
+
+_SPREAD = _spread_order(_REACH_GRID)
 
 
 def travel_reach(mechanism: Mechanism, over: tuple[float, float] | None = None) -> tuple[tuple[float, float], ...]:

@@ -156,3 +156,19 @@ def test_a_leg_whose_corner_passes_over_its_outer_joint_is_told_a_length_under_i
                                None, "at some angle")
     assert told == ("the triad closes at some angle, the other legs as given, only with groups[0].lengths[0] (AB) "
                     "under 0.2999 m, or groups[0].lengths[2] (EF) from 0.2501 m up; no length of CD alone does")
+
+
+def test_the_turn_asked_spread_out_gives_the_answer_asked_angle_by_angle_from_nought(monkeypatch):
+    """turns_round asks the angles of the turn spread out (0°, 256°, 128°, …), where a range the crank does not
+    reach is met in a few asks: the answer is the one the angles asked from 0° up give, on either side of each bound
+    the refusal tells for the short AB's triad's legs (the crank turning round and not)."""
+    from graphplan import positions
+
+    scene, message = _short_ab()
+    answers = []
+    for order in (positions._SPREAD, np.arange(positions._REACH_GRID)):
+        monkeypatch.setattr(positions, "_SPREAD", order)
+        answers.append([_turns_round(scene, 0, index, length * factor)
+                        for index, bounds in _ranges(message).items() for length in bounds if length is not None
+                        for factor in (1.0, 0.995, 1.005)])
+    assert answers[0] == answers[1] and True in answers[0] and False in answers[0]
