@@ -15,7 +15,7 @@ from collections.abc import Iterator
 
 # Set while a caller asks only whether a step refuses, not what it says (the reach advice trying swings, whose
 # refusals only say to try the next): what a refusal works out only to tell (the reach of a crank, the pole distance
-# that would fit) is left out there.
+# or a scale that would fit) is left out there.
 _VERDICT_ONLY: contextvars.ContextVar[bool] = contextvars.ContextVar("verdict_only", default=False)
 
 

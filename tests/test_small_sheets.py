@@ -463,16 +463,25 @@ def test_a_plan_too_big_for_a4_names_the_largest_pole_distance_that_fits():
     assert named_pole(one_more, "acceleration") == fitting
 
 
-def test_a_refusal_only_weighed_leaves_out_the_pole_distance_it_would_offer_and_offers_it_after():
+def test_a_refusal_only_weighed_leaves_out_the_values_it_would_offer_and_offers_them_after():
     """The reach advice tries swings only to see whether the run refuses them: there the shaper's plan on A4 is
-    refused alike, with no pole distance worked out (a halving of laid-out plans, most of a trial's time); outside
-    that, the same refusal names it again."""
+    refused alike, with no pole distance worked out (a halving of laid-out plans, most of a trial's time), and so are
+    a μl and a μF too small for A4 with no larger scale tried; outside that, the same refusals name them again."""
     from graphplan.errors import verdict_only
 
-    with verdict_only(), pytest.raises(SceneError) as weighed:
-        on_a4("shaper_six_bar")
-    assert weighed.value.where == "drawing.sheet" and "'plan-10-acceleration' (197 × 195 mm)" in str(weighed.value)
-    assert "acceleration_pole = " in str(weighed.value) and "(or less)" not in str(weighed.value)
+    quick_return = graphplan.load("fixtures/quick_return_slotted_lever.toml")   # at its μl = 0.002 m/mm
+    quick_return = dataclasses.replace(quick_return, drawing=dataclasses.replace(quick_return.drawing, sheet="A4"))
+    refusals = {"pole": lambda: on_a4("shaper_six_bar"), "μl": lambda: course_sheets(analyse(quick_return)),
+                "μF": lambda: on_a4("ratchet_crank_rocker", force_scale=5.0)}
+    for kind, refused in refusals.items():
+        with verdict_only(), pytest.raises(SceneError) as weighed:
+            refused()
+        with pytest.raises(SceneError) as told:
+            refused()
+        assert weighed.value.where == told.value.where == "drawing.sheet", kind
+        assert str(told.value).split(": no A4")[0] == str(weighed.value).split(": no A4")[0], kind
+        assert "(or less)" not in str(weighed.value) and "(or more)" not in str(weighed.value), kind
+        assert re.search(r"\((or less|or more)\)", str(told.value)), kind
     assert 50 < named_pole(refusal_on_a4("shaper_six_bar"), "acceleration") < 100
 
 

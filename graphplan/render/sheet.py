@@ -1597,9 +1597,10 @@ def _length_scale_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[
         return None
     scale = length_scale(analysis)
     what = "the plan of positions" if too_big is kinematics[0] else f"the drawing {too_big.name!r}"
+    fix = (f"drawing.length_scale = {format_scale(fitting_length_scale(analysis, sheet, scale, True))} (or more)",) \
+        if words_wanted() else ()  # no fix tried where none is read
     return _Overflow(f"{what} is {width(too_big):.0f} × {height(too_big):.0f} mm at μl = {format_scale(scale)} m/mm",
-                     (f"drawing.length_scale = {format_scale(fitting_length_scale(analysis, sheet, scale, True))} (or more)",),
-                     (too_big,))
+                     fix, (too_big,))
 
 
 def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> _Overflow | None:
@@ -1645,7 +1646,7 @@ def _polygons_overflow(analysis: Analysis, sheet: str) -> _Overflow | None:
         return None
     fix: tuple[str, ...] = ()
     scale = standard_scale(given)
-    for _ in range(_LARGER_SCALES_TRIED):
+    for _ in range(_LARGER_SCALES_TRIED if words_wanted() else 0):  # no fix tried where none is read
         if scale > given and not unheld(scale):
             fix = (f"drawing.force_scale = {format_scale(scale)} (or more)",)
             break
