@@ -100,6 +100,37 @@ def test_fu6_on_the_triad_with_a_slider_s_force_sheet_lies_on_no_drawn_line(forc
     assert beside or led
 
 
+@pytest.mark.parametrize("position", [3, 8])
+def test_s6_within_mu6_s_arc_lies_on_no_drawn_line_and_is_tied_to_its_dot(force_sheets, position):
+    """S6, the centre of mass Mu6's arc turns about, lay on that arc at position 8 once the class III group's arm h
+    was drawn through the arc's open quarter, where S6 had stood: a point's name kept its place.  The name of a point
+    an arc rings now reaches farther, on a leader from its dot."""
+    root = ElementTree.parse(force_sheets / f"forces_{position}.svg").getroot()
+    (box,) = svg_text_boxes(layer_of(root, f"body-{GROUP}-labels"), "S6")
+    lines = svg_lines(root)
+    own = [line for layer, line in lines if layer.endswith("-leaders")
+           and box.distance(Point(line.coords[-1])) <= OWN_LEADER_MM]
+    crossing = [layer for layer, line in lines if box.intersects(line) and line not in own]
+    assert crossing == []
+    # S6's dot: the centre of Mu6's arc (of the group's arcs, the one Mu6's name stands by).
+    (mu6,) = svg_text_boxes(layer_of(root, f"body-{GROUP}-labels"), "Mu6")
+    arcs = [line for _, line in svg_lines(layer_of(root, f"body-{GROUP}-moments"), "moments")
+            if not line.is_closed]
+    dot = _centre_of(min(arcs, key=mu6.distance))
+    beside = box.distance(dot) <= labels.LABEL_GAP_MM + 4.0
+    led = any(Point(leader.coords[0]).distance(dot) <= labels.LEADER_CLEARANCE + 1.0 for leader in own)
+    assert beside or led, (box.bounds, dot)
+
+
+def _centre_of(arc) -> Point:
+    """The centre of the circle through the first, middle and last points of ``arc`` (its points in order)."""
+    (ax, ay), (bx, by), (cx, cy) = (arc.coords[0], arc.coords[len(arc.coords) // 2], arc.coords[-1])
+    d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+    return Point(ux, uy)
+
+
 def layer_of(root, name: str):
     """The group of the SVG with the id ``name``."""
     (found,) = [element for element in root.iter(f"{SVG}g") if element.get("id") == name]

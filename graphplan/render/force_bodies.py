@@ -77,6 +77,7 @@ from .primitives import (
     Arrow,
     Circle,
     Layer,
+    Point,
     Polyline,
     Primitive,
     Stroke,
@@ -197,7 +198,7 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         free, outward = (start, -unit) if points_onto(start, end, point + shift) else (end, unit)
         anchors.append(Anchor(_xy(free), load_symbol(force.name, text), NAME_SIZE, direction_rad(outward),
                               force.stroke.colour, along=(arrow.start, arrow.end)))
-    turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
+    turning, turning_anchors, turned_about = _moments(sheet, group, paper, is_driver, links + arrows)
     circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
     arms, arm_anchors, equations = _arms(sheet, group, drawn, paper)
     displaced, displaced_anchors = _displacements(sheet, group, paper)
@@ -208,9 +209,11 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     figure = links + arrows + turning + circles + arms + along
     # Left on a line, a load's name reaches farther out on a leader from its arrow's shaft (its anchor's ``along``),
     # which ties it to its arrow among the group's arms and arcs (the triad with a slider's Fu6 lay on its own line
-    # of action run on to its arm, every leader from its head to a clear spot crossing another name); a point's,
-    # a moment's or an arm's name keeps its place: led far out from a thin arm in the star of arms at Σ6 (the class
-    # III triad's h3 and h8 on its A3 sheet of position 8), it reads as naming another.
+    # of action run on to its arm, every leader from its head to a clear spot crossing another name); so does the
+    # name of a point a moment's arc turns about, on a leader from its dot, which the arc rings (the triad with a
+    # slider's S6 at position 8 lay on Mu6's arc, the arm h of its class III group through the arc's open quarter).
+    # Another point's, a moment's or an arm's name keeps its place: led far out from a thin arm in the star of arms
+    # at Σ6 (the class III triad's h3 and h8 on its A3 sheet of position 8), it reads as naming another.
     # A pin a slider block is drawn round is lettered beside the block, as on the plan sheets, not on its outline.
     blocked = {slide.joint for slide in sheet.motion.slides if slide.slider in group.links}
     points = [Anchor(where, name, POINT_SIZE, open_direction(where, figure),
@@ -222,8 +225,9 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     # Clear of the filled outlines' ink (a slider's block), as wide as it is drawn: kept off its middle alone, the
     # shaper's A stood on the 0.7 mm outline of its block.
     filled = [item for item in links if isinstance(item, Polyline) and item.closed and item.fill]
-    labels = letters_placed(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others),
-                            inked=filled)
+    reach_farther = [True] * len(anchors) + [point.at in turned_about for point in points]
+    labels = letters_placed(anchors + others, figure, inked=filled,
+                            reach_farther=reach_farther + [False] * (len(others) - len(points)))
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                                    text["body_force_scale"].format(value=format_scale(scale),
@@ -525,8 +529,9 @@ def _along_slide(sheet: ForceSheet, joint: str, guide: int, slider: int, offset:
 
 
 def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
-             drawn: Sequence[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
-    """A curved arrow for every moment on the group, with its sense; the driver's balancing moment.
+             drawn: Sequence[Primitive]) -> tuple[list[Primitive], list[Anchor], set[Point]]:
+    """A curved arrow for every moment on the group, with its sense; the driver's balancing moment; and the points
+    (paper mm) the arcs turn about.
 
     Each arc leaves open the quarter where the point it turns about is
     lettered (the widest gap between the lines ``drawn`` from it).
@@ -536,6 +541,7 @@ def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
     largest = max((abs(load.moment) for load in group.loads), default=0.0)
     journals = _friction_moment_joints(sheet)
     rings: dict[str, int] = {}
+    centres: set[Point] = set()
     for load in group.loads:
         if load.is_force or abs(load.moment) <= 1e-9 * max(largest, 1.0):
             continue
@@ -550,6 +556,7 @@ def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
                                open_direction(_xy(centre), drawn))
         items += items_
         anchors.append(anchor)
+        centres.add(_xy(centre))
     driver = sheet.mechanism.driver
     if is_driver and driver.kind == "crank" and sheet.forces.balancing != 0:
         centre = _c(paper(sheet.positions[driver.pivot]))
@@ -557,7 +564,8 @@ def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
                                Stroke(0.5, BALANCING.colour), open_direction(_xy(centre), drawn))
         items += items_
         anchors.append(anchor)
-    return items, anchors
+        centres.add(_xy(centre))
+    return items, anchors, centres
 
 
 def _turn(centre: complex, radius: float, moment: float, name: str, stroke: Stroke,
