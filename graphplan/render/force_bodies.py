@@ -221,13 +221,14 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
               for name in _named_points(sheet, group) + special_names for where in [paper(sheet.positions[name])]]
     points += [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
                for name, where in along_names if name not in {anchor.text for anchor in points}]
-    others = points + turning_anchors + circle_anchors + arm_anchors
+    # The moments', friction circles' and arms' names, which keep their place (above).
+    placed_near = turning_anchors + circle_anchors + arm_anchors
     # Clear of the filled outlines' ink (a slider's block), as wide as it is drawn: kept off its middle alone, the
     # shaper's A stood on the 0.7 mm outline of its block.
     filled = [item for item in links if isinstance(item, Polyline) and item.closed and item.fill]
     reach_farther = [True] * len(anchors) + [point.at in turned_about for point in points]
-    labels = letters_placed(anchors + others, figure, inked=filled,
-                            reach_farther=reach_farther + [False] * (len(others) - len(points)))
+    labels = letters_placed(anchors + points + placed_near, figure, inked=filled,
+                            reach_farther=reach_farther + [False] * len(placed_near))
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                                    text["body_force_scale"].format(value=format_scale(scale),
@@ -718,6 +719,15 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
     items: list[Primitive] = []
     anchors: list[Anchor] = []
     lines: list[str] = []
+
+    def draw_arm(name: str, centre: complex, start: complex, end: complex, unit: complex) -> None:
+        """The arm ``name`` from ``centre`` square to the line of the arrow from ``start`` to ``end`` (along
+        ``unit``), run on to its foot, and its name."""
+        items.extend(arm_with_run_on(centre, start, end, unit))
+        foot = perpendicular_foot(centre, start, unit)
+        anchors.append(Anchor(_xy((centre + foot) / 2), name, ARM_NAME_SIZE, direction_rad(1j * (foot - centre)),
+                              ARM.colour, along=(_xy(centre), _xy(foot))))
+
     for equation, names in zip(group.moments, group.arm_names, strict=True):
         centre = _c(paper(sheet.positions[equation.about]))
         parts: list[str] = []
@@ -729,26 +739,18 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                 if term.arm / sheet.length_scale < ZERO_MM:
                     undrawn.append(f"{name} = {significant(term.arm / sheet.length_scale)} {sheet.text['millimetre']}")
                     continue
-                items += arm_with_run_on(centre, start, end, unit)
-                foot = perpendicular_foot(centre, start, unit)
-                anchors.append(Anchor(_xy((centre + foot) / 2), name, ARM_NAME_SIZE,
-                                      direction_rad(1j * (foot - centre)), ARM.colour, along=(_xy(centre), _xy(foot))))
+                draw_arm(name, centre, start, end, unit)
             else:
                 # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.
                 couple = any(load.name == term.name and not load.is_force for load in group.loads)
                 symbol = load_symbol(term.name, sheet.text)
                 parts.append(f"{sign_mark(term.moment)} {symbol if couple else f'M({symbol})'}")
-        line = _equation(sheet, group, equation, parts)
-        unknown = equation.unknown
+        unknown_arm = _unknown_arm(sheet, group, equation)
+        line = _equation(sheet, group, equation, parts, unknown_arm)
         # An unknown force's arm h drawn as the knowns' arms are (a couple, Mb or R14·x, is no arrow drawn): given
         # by its length alone, the student had no line to measure it on.
-        if line and unknown in drawn and _unknown_arm(sheet, group, equation) == "h" \
-                and equation.arm / sheet.length_scale >= ZERO_MM:
-            start, end, unit = drawn[unknown]
-            items += arm_with_run_on(centre, start, end, unit)
-            foot = perpendicular_foot(centre, start, unit)
-            anchors.append(Anchor(_xy((centre + foot) / 2), "h", ARM_NAME_SIZE, direction_rad(1j * (foot - centre)),
-                                  ARM.colour, along=(_xy(centre), _xy(foot))))
+        if line and equation.unknown in drawn and unknown_arm == "h" and equation.arm / sheet.length_scale >= ZERO_MM:
+            draw_arm("h", centre, *drawn[equation.unknown])
         if line:
             lines.append(line)
             # Said to be too short, as the lever says it of its arms: a bare h2 = 0.1088 mm sent the reader looking
@@ -763,10 +765,10 @@ def _one_letter(point: str) -> bool:
     return re.fullmatch(r"[^\W\d_]\d*[′″]*", point) is not None
 
 
-def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, parts: list[str]) -> str:
+def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, parts: list[str], arm: str) -> str:
     """The moment equation as the note writes it: ``ΣMB(3): R23τ·AB − G3·h1 + Fu3·h2 + Mu3 = 0,  R23τ = 26.13 N``.
 
-    The unknown's arm is named by its segment (its joint and the centre) where
+    The unknown's arm ``arm`` (:func:`_unknown_arm`) is named by its segment (its joint and the centre) where
     it is square to that segment, else ``h``, whose length follows the unknown's value;
     where the unknown is a couple (the balancing moment, the shift ``x`` of a
     normal reaction along its slide), the couple stands alone.  An equation
@@ -801,7 +803,6 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
                 f"{text['newton_metre']}")
     # The unknown's sense as first assumed: its moment balances the others'.
     sign = "" if equation.value == 0 or -total / equation.value >= 0 else "−"
-    arm = _unknown_arm(sheet, group, equation)
     # An arm h is no segment of the drawing: drawn as the others are (:func:`_arms`), its length is also given, as
     # the note gives it, the unknown's value following from it.
     length = f",  h = {significant(equation.arm / sheet.length_scale)} {text['millimetre']}" if arm == "h" else ""
