@@ -261,7 +261,9 @@ def test_a_parameter_sweep_runs_in_a_process_pool_and_scenes_travel_to_it(ratche
     """README: scenes and motions pickle (to a process pool's workers); the pool's answers are the ones the
     notebook's own process gives, and a scene sent there and back solves as it did."""
     rods = [0.2, 0.3, 0.4]
-    with ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("fork")) as pool:
+    # Spawned, as Windows' and macOS's pools start their workers: forked from a pytest worker that has threads
+    # running, a child may deadlock on a lock one of them held (Python 3.12 and later warn of it, as 3.13 did here).
+    with ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("spawn")) as pool:
         swept = list(pool.map(_largest_slider_acceleration, rods))
         travelled = pool.submit(copy.copy, ratchet).result()
     assert swept == [_largest_slider_acceleration(rod) for rod in rods]
